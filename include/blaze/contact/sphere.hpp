@@ -1,0 +1,55 @@
+// Sphere shape policy: a body is its centre and radius; contact is exact (thesis section 2.2.4:
+// spheres need no narrow phase beyond the centre distance).
+//
+//   delta = r_i + r_j - |x_j - x_i|,  n = (x_j - x_i) / |x_j - x_i|,
+//   contact point = x_i + n (r_i - delta/2)   (middle of the overlap),  R* = r_i r_j / (r_i + r_j)
+// Angular acceleration: alpha = T / I with I = (2/5) m r^2 (isotropic).
+#pragma once
+#include "blaze/contact/contact_geometry.hpp"
+#include "blaze/particles/particle_store.hpp"
+#include "blaze/world/world.hpp"
+
+namespace blaze {
+
+struct SphereShape {
+  static constexpr const char* name = "sphere";
+
+  template <class Real>
+  struct Body {
+    Vec3<Real> x;
+    Real r;
+    Index index;
+  };
+
+  template <class Real>
+  BLAZE_HD static Body<Real> body(const ParticleView<Real>& p, Index i) {
+    return {p.position.get(i), p.radius[i], i};
+  }
+
+  template <class Real>
+  BLAZE_HD static ContactGeometry<Real> collide(const Body<Real>& a, const Body<Real>& b) {
+    const Vec3<Real> d = b.x - a.x;
+    const Real reach = a.r + b.r;
+    const Real d2 = norm2(d);
+    if (!(d2 < reach * reach)) return ContactGeometry<Real>::none();
+    const Real dist = sqrt_r(d2);
+    // Coincident centres: any axis will do, as long as the two bodies get opposite ones.
+    const Vec3<Real> n = dist > Real(0) ? d * (Real(1) / dist)
+                                        : Vec3<Real>{0, 0, a.index < b.index ? Real(1) : Real(-1)};
+    const Real delta = reach - dist;
+    return {true, n, delta, a.x + n * (a.r - Real(0.5) * delta), a.r * b.r / reach};
+  }
+
+  // Contact with a world object (planar polygon, cylinder, ...): its collide_sphere() overload.
+  template <class Real, class Object>
+  BLAZE_HD static ContactGeometry<Real> collide_world(const Body<Real>& a, const Object& w) {
+    return collide_sphere(a.x, a.r, w);
+  }
+
+  template <class Real>
+  BLAZE_HD static Vec3<Real> angular_acceleration(const ParticleView<Real>& p, Index i, const Vec3<Real>& torque) {
+    return torque * p.inv_inertia[i];
+  }
+};
+
+}  // namespace blaze

@@ -1,0 +1,27 @@
+// Precision-correct math for kernels: float stays float on both compilers, double stays double.
+// (Unqualified ::sqrt(float) would silently widen to double on the host.)
+#pragma once
+#include <cmath>
+#include "blaze/config.hpp"
+
+namespace blaze {
+
+BLAZE_HD inline float sqrt_r(float x) { return ::sqrtf(x); }
+BLAZE_HD inline double sqrt_r(double x) { return ::sqrt(x); }
+BLAZE_HD inline float sin_r(float x) { return ::sinf(x); }
+BLAZE_HD inline double sin_r(double x) { return ::sin(x); }
+BLAZE_HD inline float cos_r(float x) { return ::cosf(x); }
+BLAZE_HD inline double cos_r(double x) { return ::cos(x); }
+BLAZE_HD inline float floor_r(float x) { return ::floorf(x); }
+BLAZE_HD inline double floor_r(double x) { return ::floor(x); }
+BLAZE_HD inline float abs_r(float x) { return ::fabsf(x); }
+BLAZE_HD inline double abs_r(double x) { return ::fabs(x); }
+
+template <class T>
+BLAZE_HD constexpr T min_r(T a, T b) { return b < a ? b : a; }
+template <class T>
+BLAZE_HD constexpr T max_r(T a, T b) { return a < b ? b : a; }
+template <class T>
+BLAZE_HD constexpr T clamp_r(T x, T lo, T hi) { return min_r(max_r(x, lo), hi); }
+
+}  // namespace blaze

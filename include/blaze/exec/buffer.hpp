@@ -1,0 +1,78 @@
+// An owning, uninitialised array in one memory space (move-only). Kernels never see it: they get
+// raw pointers through views.
+#pragma once
+#include <cstring>
+#include <type_traits>
+#include <utility>
+#include <vector>
+#include "blaze/exec/space.hpp"
+
+namespace blaze {
+
+template <class T, class Space>
+class Buffer {
+  static_assert(std::is_trivially_copyable_v<T>, "buffers hold plain data");
+
+ public:
+  Buffer() = default;
+  explicit Buffer(std::size_t n) { resize(n); }
+  ~Buffer() { Space::deallocate(data_); }
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+  Buffer(Buffer&& o) noexcept : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
+  Buffer& operator=(Buffer&& o) noexcept {
+    swap(o);
+    return *this;
+  }
+  void swap(Buffer& o) noexcept {
+    std::swap(data_, o.data_);
+    std::swap(size_, o.size_);
+  }
+
+  // Contents are discarded when the size changes.
+  void resize(std::size_t n) {
+    if (n == size_) return;
+    Space::deallocate(data_);
+    data_ = static_cast<T*>(Space::allocate(n * sizeof(T)));
+    size_ = n;
+  }
+  T* data() { return data_; }
+  const T* data() const { return data_; }
+  std::size_t size() const { return size_; }
+
+ private:
+  T* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
+// Copies between any two spaces.
+template <class T>
+void copy_n(const T* src, std::size_t n, T* dst, Host, Host) {
+  if (n) std::memcpy(dst, src, n * sizeof(T));
+}
+#if BLAZE_DEVICE_CODE
+template <class T, class S1, class S2>
+void copy_n(const T* src, std::size_t n, T* dst, S1, S2) {
+  if (n) cuda_check(cudaMemcpy(dst, src, n * sizeof(T), cudaMemcpyDefault), "cudaMemcpy");
+}
+#endif
+
+template <class T, class Space>
+std::vector<T> to_host(const Buffer<T, Space>& b, std::size_t n) {
+  std::vector<T> out(n);
+  copy_n(b.data(), n, out.data(), Space{}, Host{});
+  return out;
+}
+template <class T, class Space>
+void from_host(Buffer<T, Space>& b, const std::vector<T>& v) {
+  b.resize(v.size());
+  copy_n(v.data(), v.size(), b.data(), Host{}, Space{});
+}
+template <class T, class Space>
+T read_one(const T* p, Space) {
+  T v;
+  copy_n(p, 1, &v, Space{}, Host{});
+  return v;
+}
+
+}  // namespace blaze

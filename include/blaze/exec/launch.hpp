@@ -1,0 +1,35 @@
+// The one launcher: for_each(space, n, f) calls f(i) for i in [0, n).
+// Host: an OpenMP loop with static scheduling. Cuda: one thread per i.
+// Functors are trivially copyable structs of views with a const BLAZE_HD operator()(Index).
+#pragma once
+#include <type_traits>
+#include "blaze/exec/space.hpp"
+
+namespace blaze {
+
+template <class F>
+void for_each(Host, Index n, const F& f) {
+  static_assert(std::is_trivially_copyable_v<F>, "kernel functors are passed by value to the GPU");
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) f(i);
+}
+
+#if BLAZE_DEVICE_CODE
+constexpr int kBlockSize = 256;
+
+template <class F>
+__global__ void for_each_kernel(Index n, F f) {
+  const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < n) f(i);
+}
+
+template <class F>
+void for_each(Cuda, Index n, const F& f) {
+  static_assert(std::is_trivially_copyable_v<F>, "kernel functors are passed by value to the GPU");
+  if (n <= 0) return;
+  for_each_kernel<<<(n + kBlockSize - 1) / kBlockSize, kBlockSize>>>(n, f);
+  cuda_check(cudaGetLastError(), "kernel launch");
+}
+#endif
+
+}  // namespace blaze

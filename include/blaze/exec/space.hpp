@@ -1,0 +1,57 @@
+// Execution/memory spaces. A space is a tag type; code is templated on it, so one binary built by
+// nvcc can run the same kernels on the host (OpenMP) and on the GPU, and compare them.
+#pragma once
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include "blaze/config.hpp"
+#if BLAZE_DEVICE_CODE
+#include <cuda_runtime.h>
+#endif
+
+namespace blaze {
+
+struct Host {
+  static constexpr const char* name = "cpu";
+  static void* allocate(std::size_t bytes) {
+    if (bytes == 0) return nullptr;
+    const std::size_t rounded = (bytes + 63) / 64 * 64;
+    void* p = std::aligned_alloc(64, rounded);
+    if (!p) throw std::bad_alloc();
+    return p;
+  }
+  static void deallocate(void* p) { std::free(p); }
+};
+
+#if BLAZE_DEVICE_CODE
+inline void cuda_check(cudaError_t err, const char* what) {
+  if (err != cudaSuccess)
+    throw std::runtime_error(std::string("CUDA error in ") + what + ": " + cudaGetErrorString(err));
+}
+
+struct Cuda {
+  static constexpr const char* name = "gpu";
+  static void* allocate(std::size_t bytes) {
+    if (bytes == 0) return nullptr;
+    void* p = nullptr;
+    cuda_check(cudaMalloc(&p, bytes), "cudaMalloc");
+    return p;
+  }
+  static void deallocate(void* p) {
+    if (p) cudaFree(p);
+  }
+};
+using DefaultSpace = Cuda;
+#else
+using DefaultSpace = Host;
+#endif
+
+// Wait for all work queued in a space (timing, host reads).
+inline void fence(Host) {}
+#if BLAZE_DEVICE_CODE
+inline void fence(Cuda) { cuda_check(cudaDeviceSynchronize(), "cudaDeviceSynchronize"); }
+#endif
+
+}  // namespace blaze

@@ -1,0 +1,108 @@
+// Broad phase on one memory space: the uniform grid, the sort by cell hash with the particle
+// arrays reordered (thesis section 2.2.3: sorting gave it 32x), cell start/end, and a Verlet
+// neighbour list with a skin, rebuilt when any particle has moved more than half the skin since
+// the last build or has left the domain. Particles outside the domain at a rebuild are sorted to
+// the end, counted, their mass summed, and dropped.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include "blaze/exec/primitives.hpp"
+#include "blaze/sim/phase_timer.hpp"
+#include "kernels/broad_phase_kernels.hpp"
+
+namespace blaze {
+
+template <class Real, class Space>
+class BroadPhase {
+ public:
+  struct Removed {
+    Index count = 0;
+    double mass = 0;  // kg
+  };
+
+  BroadPhase(const GridSpec<Real>& grid, Real skin) : grid_(grid), skin_(skin) {
+    cell_start_.resize(grid_.cell_count() + 1);
+    cell_end_.resize(grid_.cell_count() + 1);
+    end_bit_ = 1;
+    while (end_bit_ < 32 && (std::uint64_t{1} << end_bit_) <= grid_.outside_key()) ++end_bit_;
+  }
+
+  const GridSpec<Real>& grid() const { return grid_; }
+  Real skin() const { return skin_; }
+  Index capacity() const { return capacity_; }
+  std::uint64_t builds() const { return builds_; }
+
+  bool needs_rebuild(ParticleStore<Real, Space>& store) {
+    if (builds_ == 0) return true;
+    auto p = store.view();
+    const Real h = Real(0.5) * skin_;
+    return reduce_max(Space{}, p.n, NeedsRebuild<Real>{grid_, p.position, field(reference_), h * h}, 0) > 0;
+  }
+
+  Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer) {
+    const Index n = store.size();
+    keys_.resize(std::max<std::size_t>(keys_.size(), n));
+    order_.resize(std::max<std::size_t>(order_.size(), n));
+    timer.time("hash", [&] {
+      for_each(Space{}, n, HashParticles<Real>{grid_, store.view().position, keys_.data(), order_.data()});
+    });
+    timer.time("sort", [&] { sorter_.sort_pairs(keys_.data(), order_.data(), n, end_bit_); });
+    timer.time("reorder", [&] { store.permute(order_.data()); });
+    Removed removed;
+    timer.time("neighbours", [&] {
+      const Index cells = static_cast<Index>(grid_.cell_count()) + 1;
+      for_each(Space{}, cells, Fill<std::uint32_t>{cell_start_.data(), kEmptyCell});
+      for_each(Space{}, n, CellBounds{keys_.data(), n, cell_start_.data(), cell_end_.data()});
+      const std::uint32_t first_outside = read_one(cell_start_.data() + grid_.outside_key(), Space{});
+      if (first_outside != kEmptyCell) {
+        removed.count = n - static_cast<Index>(first_outside);
+        std::vector<Real> inv_m(removed.count);
+        copy_n(store.view().inv_mass + first_outside, inv_m.size(), inv_m.data(), Space{}, Host{});
+        for (Real im : inv_m) removed.mass += 1.0 / static_cast<double>(im);
+        store.truncate(static_cast<Index>(first_outside));
+      }
+      build_list(store);
+    });
+    return removed;
+  }
+
+  NeighbourView neighbours() {
+    return {list_.data(), count_.data(), stride_, capacity_};
+  }
+
+ private:
+  static Vec3Field<Real> field(Buffer<Real, Space> (&f)[3]) { return {f[0].data(), f[1].data(), f[2].data()}; }
+
+  void build_list(ParticleStore<Real, Space>& store) {
+    auto p = store.view();
+    stride_ = p.n;
+    count_.resize(std::max<std::size_t>(count_.size(), p.n));
+    for (;;) {
+      list_.resize(std::max<std::size_t>(list_.size(), static_cast<std::size_t>(capacity_) * p.n));
+      for_each(Space{}, p.n,
+               BuildNeighbours<Real>{grid_, p.position, p.radius, cell_start_.data(), cell_end_.data(), skin_,
+                                     neighbours()});
+      const Index most = reduce_max(Space{}, p.n, ValueOf<Index>{count_.data()}, 0);
+      if (most <= capacity_) break;
+      capacity_ = most + most / 4 + 1;  // grow with headroom, rebuild
+    }
+    for (auto& c : reference_) c.resize(std::max<std::size_t>(c.size(), p.n));
+    for_each(Space{}, p.n, CopyVec3<Real>{p.position, field(reference_)});
+    ++builds_;
+  }
+
+  GridSpec<Real> grid_;
+  Real skin_;
+  int end_bit_;
+  Buffer<std::uint32_t, Space> keys_;
+  Buffer<Index, Space> order_;
+  Buffer<std::uint32_t, Space> cell_start_, cell_end_;
+  Buffer<Index, Space> list_, count_;
+  Buffer<Real, Space> reference_[3];
+  Index stride_ = 0;
+  Index capacity_ = 16;
+  std::uint64_t builds_ = 0;
+  RadixSorter<Space> sorter_;
+};
+
+}  // namespace blaze

@@ -1,0 +1,40 @@
+// Linear spring-dashpot normal force (thesis eq. 2.2, section 2.3.1; Cundall & Strack 1979).
+//
+//   F_n = K_n delta + C_n v_n,        force on body i: -F_n n
+//   C_n = beta sqrt(K_n m_eff),       beta = -2 ln(e) / sqrt(ln(e)^2 + pi^2)
+//
+// delta: overlap (m); v_n: normal approach speed (m/s, > 0 closing); K_n: stiffness (N/m);
+// m_eff = (1/m_i + 1/m_j)^-1 (kg; m_j = infinity for walls); e: coefficient of restitution in
+// (0, 1]. For this law, e is exactly the ratio of separation to approach speed of an isolated
+// contact (the damped oscillator's half period), whatever the impact speed.
+// Contact duration: t_c = pi / sqrt(K_n/m_eff - (C_n / 2 m_eff)^2).
+// The thesis writes C_n with a positive ln(e) factor, i.e. negative; beta here is >= 0.
+#pragma once
+#include <cmath>
+#include <stdexcept>
+#include "blaze/core/math.hpp"
+
+namespace blaze {
+
+template <class Real>
+struct LinearSpringDashpot {
+  Real kn;    // N/m
+  Real beta;  // dimensionless damping factor, 2x the damping ratio
+
+  static LinearSpringDashpot from_restitution(double kn, double e) {
+    if (!(kn > 0)) throw std::invalid_argument("linear spring-dashpot: stiffness kn must be > 0 N/m");
+    if (!(e > 0 && e <= 1)) throw std::invalid_argument("linear spring-dashpot: restitution must lie in (0, 1]");
+    const double pi = 3.14159265358979323846;
+    const double le = std::log(e);
+    return {static_cast<Real>(kn), static_cast<Real>(-2 * le / std::sqrt(le * le + pi * pi))};
+  }
+
+  // Scalar normal force (N, positive = repulsive) for overlap delta and approach speed v_n.
+  BLAZE_HD Real normal_force(Real delta, Real v_n, Real m_eff, Real /*r_eff*/) const {
+    return kn * delta + beta * sqrt_r(kn * m_eff) * v_n;
+  }
+  // Normal stiffness at this overlap (N/m), for the critical time step.
+  Real stiffness(Real /*delta*/, Real /*r_eff*/) const { return kn; }
+};
+
+}  // namespace blaze

@@ -1,0 +1,54 @@
+// Host-side particle description: what scenes build and what output reads. Plain vectors, one
+// entry per particle, in SI units. The simulation uploads it into its SoA store.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include "blaze/core/quat.hpp"
+
+namespace blaze {
+
+template <class Real>
+struct ParticleState {
+  std::vector<Vec3<Real>> position;         // m, centre of mass
+  std::vector<Vec3<Real>> velocity;         // m/s
+  std::vector<Vec3<Real>> angular_velocity; // rad/s, world frame
+  std::vector<Quat<Real>> orientation;      // unit quaternion, body to world
+  std::vector<Real> radius;                 // m (bounding radius for non-spheres)
+  std::vector<Real> mass;                   // kg
+  std::vector<Real> inertia;                // kg m^2 (sphere: 2/5 m r^2)
+  std::vector<std::uint8_t> material;       // index into the material-pair table
+  std::vector<Index> id;                    // stable identity, survives re-sorting
+
+  std::size_t size() const { return position.size(); }
+
+  // A solid sphere of uniform density (kg/m^3).
+  void add_sphere(const Vec3<Real>& x, Real r, Real density, std::uint8_t mat,
+                  const Vec3<Real>& v = {0, 0, 0}) {
+    const Real m = density * Real(4.0 / 3.0 * 3.14159265358979323846) * r * r * r;
+    position.push_back(x);
+    velocity.push_back(v);
+    angular_velocity.push_back({0, 0, 0});
+    orientation.push_back(Quat<Real>::identity());
+    radius.push_back(r);
+    mass.push_back(m);
+    inertia.push_back(Real(0.4) * m * r * r);
+    material.push_back(mat);
+    id.push_back(static_cast<Index>(id.size()));
+  }
+
+  void check_consistent() const {
+    const std::size_t n = size();
+    if (velocity.size() != n || angular_velocity.size() != n || orientation.size() != n ||
+        radius.size() != n || mass.size() != n || inertia.size() != n || material.size() != n ||
+        id.size() != n)
+      throw std::invalid_argument("ParticleState: field lengths differ");
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(radius[i] > 0) || !(mass[i] > 0) || !(inertia[i] > 0))
+        throw std::invalid_argument("ParticleState: particle " + std::to_string(i) +
+                                    " needs radius, mass and inertia > 0");
+  }
+};
+
+}  // namespace blaze

@@ -1,0 +1,168 @@
+// The owning SoA particle store of one memory space, and the trivially copyable view kernels take.
+#pragma once
+#include <cstdint>
+#include "blaze/exec/buffer.hpp"
+#include "blaze/exec/launch.hpp"
+#include "blaze/particles/particle_state.hpp"
+#include "blaze/particles/soa.hpp"
+
+namespace blaze {
+
+template <class Real>
+struct ParticleView {
+  Index n;  // active particles: [0, n)
+  Vec3Field<Real> position, velocity, angular_velocity, force, torque;
+  Vec3Field<Real> acceleration_prev;  // only for integrators that need a(t-1); null otherwise
+  QuatField<Real> orientation;
+  const Real* radius;
+  const Real* inv_mass;
+  const Real* inv_inertia;
+  const std::uint8_t* material;
+  const Index* id;
+};
+
+template <class T>
+struct Gather {
+  const T* src;
+  T* dst;
+  const Index* perm;
+  BLAZE_HD void operator()(Index i) const { dst[i] = src[perm[i]]; }
+};
+
+template <class Real, class Space>
+class ParticleStore {
+ public:
+  void upload(const ParticleState<Real>& s, bool keep_previous_acceleration) {
+    s.check_consistent();
+    n_ = static_cast<Index>(s.size());
+    std::vector<Real> inv_m(n_), inv_i(n_);
+    for (Index i = 0; i < n_; ++i) {
+      inv_m[i] = Real(1) / s.mass[i];
+      inv_i[i] = Real(1) / s.inertia[i];
+    }
+    upload_vec3(position_, s.position);
+    upload_vec3(velocity_, s.velocity);
+    upload_vec3(angular_velocity_, s.angular_velocity);
+    for (auto* f : {&force_, &torque_}) resize3(*f, n_);
+    resize3(acceleration_prev_, keep_previous_acceleration ? n_ : 0);
+    if (keep_previous_acceleration) {
+      const std::vector<Vec3<Real>> zero(n_, Vec3<Real>{0, 0, 0});
+      upload_vec3(acceleration_prev_, zero);
+    }
+    std::vector<Real> qw(n_), qx(n_), qy(n_), qz(n_);
+    for (Index i = 0; i < n_; ++i) {
+      qw[i] = s.orientation[i].w; qx[i] = s.orientation[i].x;
+      qy[i] = s.orientation[i].y; qz[i] = s.orientation[i].z;
+    }
+    from_host(orientation_[0], qw); from_host(orientation_[1], qx);
+    from_host(orientation_[2], qy); from_host(orientation_[3], qz);
+    from_host(radius_, s.radius);
+    from_host(inv_mass_, inv_m);
+    from_host(inv_inertia_, inv_i);
+    from_host(material_, s.material);
+    from_host(id_, s.id);
+    scratch_real_.resize(n_);
+  }
+
+  // The active particles [0, n) back on the host, in the store's current (sorted) order.
+  ParticleState<Real> download() const {
+    ParticleState<Real> s;
+    s.position = download_vec3(position_);
+    s.velocity = download_vec3(velocity_);
+    s.angular_velocity = download_vec3(angular_velocity_);
+    const auto qw = to_host(orientation_[0], n_), qx = to_host(orientation_[1], n_),
+               qy = to_host(orientation_[2], n_), qz = to_host(orientation_[3], n_);
+    s.orientation.resize(n_);
+    for (Index i = 0; i < n_; ++i) s.orientation[i] = {qw[i], qx[i], qy[i], qz[i]};
+    s.radius = to_host(radius_, n_);
+    s.mass = to_host(inv_mass_, n_);
+    for (auto& m : s.mass) m = Real(1) / m;
+    s.inertia = to_host(inv_inertia_, n_);
+    for (auto& m : s.inertia) m = Real(1) / m;
+    s.material = to_host(material_, n_);
+    s.id = to_host(id_, n_);
+    return s;
+  }
+
+  std::vector<Vec3<Real>> download_force() const { return download_vec3(force_); }
+  std::vector<Vec3<Real>> download_torque() const { return download_vec3(torque_); }
+
+  ParticleView<Real> view() {
+    return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
+            field(torque_), field(acceleration_prev_),
+            {orientation_[0].data(), orientation_[1].data(), orientation_[2].data(), orientation_[3].data()},
+            radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), id_.data()};
+  }
+
+  Index size() const { return n_; }
+  // Drops the particles [n, size) (they were sorted to the end).
+  void truncate(Index n) { n_ = n; }
+
+  // Puts particle perm[i] at position i in every field that carries state across steps.
+  // Force and torque are recomputed before they are read, so they are not moved.
+  void permute(const Index* perm) {
+    for (auto* f : {&position_, &velocity_, &angular_velocity_}) permute3(*f, perm);
+    if (acceleration_prev_[0].size()) permute3(acceleration_prev_, perm);
+    for (auto& c : orientation_) permute_one(c, scratch_real_, perm);
+    permute_one(radius_, scratch_real_, perm);
+    permute_one(inv_mass_, scratch_real_, perm);
+    permute_one(inv_inertia_, scratch_real_, perm);
+    permute_one(material_, scratch_u8_, perm);
+    permute_one(id_, scratch_index_, perm);
+  }
+
+  // Bytes held per particle (for benchmarks).
+  std::size_t bytes() const {
+    std::size_t b = 0;
+    for (const auto* f : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_})
+      for (const auto& c : *f) b += c.size() * sizeof(Real);
+    for (const auto& c : orientation_) b += c.size() * sizeof(Real);
+    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size()) * sizeof(Real);
+    b += material_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
+    return b;
+  }
+
+ private:
+  using Field3 = Buffer<Real, Space>[3];
+
+  static Vec3Field<Real> field(Field3& f) { return {f[0].data(), f[1].data(), f[2].data()}; }
+  static void resize3(Field3& f, Index n) {
+    for (auto& c : f) c.resize(n);
+  }
+  void upload_vec3(Field3& f, const std::vector<Vec3<Real>>& v) {
+    std::vector<Real> c(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) c[i] = v[i].x;
+    from_host(f[0], c);
+    for (std::size_t i = 0; i < v.size(); ++i) c[i] = v[i].y;
+    from_host(f[1], c);
+    for (std::size_t i = 0; i < v.size(); ++i) c[i] = v[i].z;
+    from_host(f[2], c);
+  }
+  std::vector<Vec3<Real>> download_vec3(const Field3& f) const {
+    const auto x = to_host(f[0], n_), y = to_host(f[1], n_), z = to_host(f[2], n_);
+    std::vector<Vec3<Real>> v(n_);
+    for (Index i = 0; i < n_; ++i) v[i] = {x[i], y[i], z[i]};
+    return v;
+  }
+  template <class T>
+  void permute_one(Buffer<T, Space>& f, Buffer<T, Space>& scratch, const Index* perm) {
+    scratch.resize(f.size());
+    for_each(Space{}, n_, Gather<T>{f.data(), scratch.data(), perm});
+    f.swap(scratch);
+  }
+  void permute3(Field3& f, const Index* perm) {
+    for (auto& c : f) permute_one(c, scratch_real_, perm);
+  }
+
+  Index n_ = 0;
+  Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_;
+  Buffer<Real, Space> orientation_[4];
+  Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
+  Buffer<std::uint8_t, Space> material_;
+  Buffer<Index, Space> id_;
+  Buffer<Real, Space> scratch_real_;
+  Buffer<std::uint8_t, Space> scratch_u8_;
+  Buffer<Index, Space> scratch_index_;
+};
+
+}  // namespace blaze

@@ -1,0 +1,28 @@
+// System energies from a host snapshot (J), for output and conservation checks:
+//   translational  sum 1/2 m v.v      rotational  sum 1/2 I w.w  (spheres: isotropic I)
+//   potential      sum -m g.x         (zero at the origin)
+#pragma once
+#include "blaze/particles/particle_state.hpp"
+
+namespace blaze {
+
+struct Energies {
+  double translational = 0, rotational = 0, potential = 0;
+  double kinetic() const { return translational + rotational; }
+  double total() const { return translational + rotational + potential; }
+};
+
+template <class Real>
+Energies energies(const ParticleState<Real>& s, const Vec3<Real>& gravity) {
+  Energies e;
+  const Vec3<double> g = vec_cast<double>(gravity);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double m = s.mass[i];
+    e.translational += 0.5 * m * norm2(vec_cast<double>(s.velocity[i]));
+    e.rotational += 0.5 * static_cast<double>(s.inertia[i]) * norm2(vec_cast<double>(s.angular_velocity[i]));
+    e.potential -= m * dot(g, vec_cast<double>(s.position[i]));
+  }
+  return e;
+}
+
+}  // namespace blaze

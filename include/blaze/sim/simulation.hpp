@@ -1,0 +1,139 @@
+// One simulation on one memory space: the time step as a fixed sequence of kernels over views
+//   pre_force integrate -> [rebuild: hash, sort, reorder, cells, neighbours] -> contacts -> world
+//   -> post_force integrate
+// (thesis Algorithm 2.1). Shape, law, integrator, contact kinematics and features are policies.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include "blaze/contact/kinematics.hpp"
+#include "blaze/grid/broad_phase.hpp"
+#include "blaze/sim/features.hpp"
+#include "blaze/world/world.hpp"
+#include "kernels/contact_forces.hpp"
+#include "kernels/integrate.hpp"
+#include "kernels/world_forces.hpp"
+
+namespace blaze {
+
+template <class Real>
+struct SimulationParams {
+  Real dt;              // s
+  Vec3<Real> gravity;   // m/s^2
+  Vec3<Real> domain_lo; // m; particles leaving [lo, hi) are removed and counted
+  Vec3<Real> domain_hi; // m
+  Real skin;            // m, neighbour-list margin; 0 rebuilds whenever anything moves
+};
+
+template <class Space, class Shape, class Law, class Integrator, class Kinematics = ContactPointVelocity,
+          class Features = FullFeatures>
+class Simulation {
+ public:
+  using Real = typename Law::real_type;
+
+  Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
+             const ParticleState<Real>& particles)
+      : params_(params), laws_(laws), broad_(make_grid(params, particles), params.skin) {
+    if (!(params.dt > 0)) throw std::invalid_argument("simulation: dt must be > 0 s");
+    if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
+    check_materials(laws, world, particles);
+    store_.upload(particles, Integrator::needs_previous_acceleration);
+    world_.upload(world);
+    initial_count_ = store_.size();
+    refresh_neighbours();
+    compute_forces();
+    for_each(Space{}, store_.size(), integrate<Stage::prime>());
+  }
+
+  void step() {
+    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::pre_force>()); });
+    refresh_neighbours();
+    compute_forces();
+    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::post_force>()); });
+    ++steps_;
+  }
+  void run(std::uint64_t steps) {
+    for (std::uint64_t s = 0; s < steps; ++s) step();
+  }
+
+  ParticleState<Real> state() const { return store_.download(); }
+  std::vector<Vec3<Real>> forces() const { return store_.download_force(); }
+  std::vector<Vec3<Real>> torques() const { return store_.download_torque(); }
+  Index size() const { return store_.size(); }
+  Index initial_count() const { return initial_count_; }
+  Index removed_count() const { return removed_count_; }
+  double removed_mass() const { return removed_mass_; }
+  std::uint64_t steps() const { return steps_; }
+  double time() const { return static_cast<double>(steps_) * params_.dt; }
+  std::uint64_t neighbour_builds() const { return broad_.builds(); }
+  Index neighbour_capacity() const { return broad_.capacity(); }
+  const SimulationParams<Real>& params() const { return params_; }
+  PhaseTimer<Space>& timer() { return timer_; }
+  std::size_t particle_bytes() const { return store_.bytes(); }
+
+ private:
+  static GridSpec<Real> make_grid(const SimulationParams<Real>& prm, const ParticleState<Real>& s) {
+    Real r_max = 0;
+    for (Real r : s.radius) r_max = std::max(r_max, r);
+    if (!(r_max > 0)) throw std::invalid_argument("simulation: no particles");
+    return GridSpec<Real>::make(prm.domain_lo, prm.domain_hi, Real(2) * r_max + prm.skin);
+  }
+
+  static void check_materials(const PairTable<Law>& laws, const World<Real>& world, const ParticleState<Real>& s) {
+    bool used[PairTable<Law>::kMaxMaterials] = {};
+    for (auto m : s.material) {
+      if (m >= PairTable<Law>::kMaxMaterials) throw std::invalid_argument("particle material index too large");
+      used[m] = true;
+    }
+    auto need = [&](int a, int b, const char* what) {
+      if (!laws.has(a, b))
+        throw std::invalid_argument(std::string("no contact law for material pair (") + std::to_string(a) + ", " +
+                                    std::to_string(b) + ") needed by " + what);
+    };
+    for (int a = 0; a < PairTable<Law>::kMaxMaterials; ++a) {
+      if (!used[a]) continue;
+      for (int b = 0; b < PairTable<Law>::kMaxMaterials; ++b)
+        if (used[b]) need(a, b, "particle-particle contacts");
+      for (const auto& w : world.polygons) need(a, w.material, "a planar wall");
+      for (const auto& w : world.cylinders) need(a, w.material, "a cylinder");
+    }
+  }
+
+  template <Stage S>
+  Integrate<Integrator, Shape, Features, Real, S> integrate() {
+    return {store_.view(), params_.dt, params_.gravity};
+  }
+
+  void refresh_neighbours() {
+    bool stale = false;
+    timer_.time("rebuild-check", [&] { stale = broad_.needs_rebuild(store_); });
+    if (!stale) return;
+    const auto removed = broad_.rebuild(store_, timer_);
+    removed_count_ += removed.count;
+    removed_mass_ += removed.mass;
+  }
+
+  void compute_forces() {
+    const ParticleView<Real> p = store_.view();
+    timer_.time("contacts", [&] {
+      for_each(Space{}, p.n, ContactForces<Shape, Law, Kinematics, Features>{p, broad_.neighbours(), laws_});
+    });
+    if (!world_.empty())
+      timer_.time("walls", [&] {
+        for_each(Space{}, p.n, WorldForces<Shape, Law, Kinematics, Features>{p, world_.view(), laws_});
+      });
+  }
+
+  SimulationParams<Real> params_;
+  PairTable<Law> laws_;
+  ParticleStore<Real, Space> store_;
+  WorldStore<Real, Space> world_;
+  BroadPhase<Real, Space> broad_;
+  PhaseTimer<Space> timer_;
+  Index initial_count_ = 0;
+  Index removed_count_ = 0;
+  double removed_mass_ = 0;
+  std::uint64_t steps_ = 0;
+};
+
+}  // namespace blaze

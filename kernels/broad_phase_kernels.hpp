@@ -1,0 +1,128 @@
+// Broad-phase kernels (thesis Algorithm 2.1, lines 1-3): hash, cell bounds, neighbour list, and
+// the per-step test of whether the list is still valid.
+#pragma once
+#include <cstdint>
+#include "blaze/grid/grid_spec.hpp"
+#include "blaze/particles/particle_store.hpp"
+
+namespace blaze {
+
+inline constexpr std::uint32_t kEmptyCell = 0xffffffffu;
+
+// Neighbour list: entry k of particle i at index[k * stride + i] (consecutive threads read
+// consecutive addresses). count[i] may exceed capacity: the list then overflowed and is rebuilt
+// with more room.
+struct NeighbourView {
+  Index* index;
+  Index* count;
+  Index stride;
+  Index capacity;
+};
+
+// Line 1: key = cell hash (eq. 2.1), or the outside key for particles that left the domain.
+template <class Real>
+struct HashParticles {
+  GridSpec<Real> grid;
+  Vec3Field<Real> position;
+  std::uint32_t* key;
+  Index* order;
+  BLAZE_HD void operator()(Index i) const {
+    int cx, cy, cz;
+    key[i] = grid.cell_of(position.get(i), cx, cy, cz) ? grid.hash(cx, cy, cz) : grid.outside_key();
+    order[i] = i;
+  }
+};
+
+// After sorting: first and one-past-last particle of every occupied cell.
+struct CellBounds {
+  const std::uint32_t* key;
+  Index n;
+  std::uint32_t* start;
+  std::uint32_t* end;
+  BLAZE_HD void operator()(Index i) const {
+    const std::uint32_t k = key[i];
+    if (i == 0 || key[i - 1] != k) start[k] = static_cast<std::uint32_t>(i);
+    if (i == n - 1 || key[i + 1] != k) end[k] = static_cast<std::uint32_t>(i + 1);
+  }
+};
+
+template <class T>
+struct Fill {
+  T* data;
+  T value;
+  BLAZE_HD void operator()(Index i) const { data[i] = value; }
+};
+
+// Line 3: every j within r_i + r_j + skin of i, from the 27 cells around i's cell, in a fixed
+// order (cells y-z-x, particles by sorted index) so that every backend builds the same list.
+template <class Real>
+struct BuildNeighbours {
+  GridSpec<Real> grid;
+  Vec3Field<Real> position;
+  const Real* radius;
+  const std::uint32_t* start;
+  const std::uint32_t* end;
+  Real skin;
+  NeighbourView list;
+
+  BLAZE_HD void operator()(Index i) const {
+    const Vec3<Real> xi = position.get(i);
+    const Real ri = radius[i];
+    int cx = 0, cy = 0, cz = 0;
+    grid.cell_of(xi, cx, cy, cz);  // inside: outsiders were removed before the build
+    Index count = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int y = cy + dy;
+      if (y < 0 || y >= grid.ny) continue;
+      for (int dz = -1; dz <= 1; ++dz) {
+        const int z = cz + dz;
+        if (z < 0 || z >= grid.nz) continue;
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int x = cx + dx;
+          if (x < 0 || x >= grid.nx) continue;
+          const std::uint32_t cell = grid.hash(x, y, z);
+          const std::uint32_t s = start[cell];
+          if (s == kEmptyCell) continue;
+          for (std::uint32_t j = s; j < end[cell]; ++j) {
+            if (static_cast<Index>(j) == i) continue;
+            const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i)
+            if (norm2(position.get(static_cast<Index>(j)) - xi) < reach * reach) {
+              if (count < list.capacity) list.index[count * list.stride + i] = static_cast<Index>(j);
+              ++count;
+            }
+          }
+        }
+      }
+    }
+    list.count[i] = count;
+  }
+};
+
+// 1 if particle i moved more than half the skin since the last build, or left the domain.
+template <class Real>
+struct NeedsRebuild {
+  GridSpec<Real> grid;
+  Vec3Field<Real> position;
+  Vec3Field<Real> reference;
+  Real half_skin_squared;
+  BLAZE_HD int operator()(Index i) const {
+    const Vec3<Real> x = position.get(i);
+    int cx, cy, cz;
+    if (!grid.cell_of(x, cx, cy, cz)) return 1;
+    return norm2(x - reference.get(i)) > half_skin_squared ? 1 : 0;
+  }
+};
+
+template <class T>
+struct ValueOf {
+  const T* v;
+  BLAZE_HD int operator()(Index i) const { return static_cast<int>(v[i]); }
+};
+
+template <class Real>
+struct CopyVec3 {
+  Vec3Field<Real> src, dst;
+  BLAZE_HD void operator()(Index i) const { dst.set(i, src.get(i)); }
+};
+
+}  // namespace blaze

@@ -1,0 +1,46 @@
+// Particle-particle contact forces (thesis Algorithm 2.1, line 4), one thread per particle i:
+// walk i's neighbours, collide with the shape policy, evaluate the law for the material pair, and
+// write only i's force and torque (eq. 2.4: T = r x F). Each pair is evaluated from both sides, so
+// no atomics are needed and the summation order is the same on every backend.
+#pragma once
+#include "blaze/contact/kinematics.hpp"
+#include "blaze/laws/contact_law.hpp"
+#include "blaze/sim/features.hpp"
+#include "kernels/broad_phase_kernels.hpp"
+
+namespace blaze {
+
+template <class Shape, class Law, class Kinematics, class Features>
+struct ContactForces {
+  using Real = typename Law::real_type;
+  ParticleView<Real> p;
+  NeighbourView list;
+  PairTable<Law> laws;
+
+  BLAZE_HD void operator()(Index i) const {
+    const auto bi = Shape::body(p, i);
+    const Vec3<Real> vi = p.velocity.get(i);
+    const Vec3<Real> wi = Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0};
+    const Real inv_mi = p.inv_mass[i];
+    const int mi = p.material[i];
+    Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
+    const Index count = min_r(list.count[i], list.capacity);
+    for (Index k = 0; k < count; ++k) {
+      const Index j = list.index[k * list.stride + i];
+      const auto bj = Shape::body(p, j);
+      const ContactGeometry<Real> g = Shape::collide(bi, bj);
+      if (!g.touching) continue;
+      const Vec3<Real> ri = g.point - bi.x;
+      const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
+      const Vec3<Real> v_rel = Kinematics::relative(vi, wi, ri, p.velocity.get(j), wj, g.point - bj.x);
+      const Real m_eff = Real(1) / (inv_mi + p.inv_mass[j]);
+      const Vec3<Real> fij = laws(mi, p.material[j]).force(g, v_rel, m_eff);
+      f += fij;
+      if constexpr (Features::rotation) t += cross(ri, fij);
+    }
+    p.force.set(i, f);
+    if constexpr (Features::rotation) p.torque.set(i, t);
+  }
+};
+
+}  // namespace blaze

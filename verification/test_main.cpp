@@ -1,0 +1,12 @@
+// Boost.Test entry point of the verification suite (one binary per backend).
+#define BOOST_TEST_MODULE blaze_verification
+#include <boost/test/unit_test.hpp>
+#include "blaze/exec/device_info.hpp"
+
+struct ReportBackend {
+  ReportBackend() {
+    BOOST_TEST_MESSAGE("blaze verification on " << blaze::DefaultSpace::name << ": "
+                                                << blaze::device_name(blaze::DefaultSpace{}));
+  }
+};
+BOOST_TEST_GLOBAL_FIXTURE(ReportBackend);
