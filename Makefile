@@ -18,8 +18,12 @@ CXX := g++
 WARN := -Wall -Wextra -Wshadow -Werror
 CXXFLAGS := -std=c++17 -O2 -fopenmp $(WARN) -Iinclude -I. -DBOOST_TEST_DYN_LINK
 NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-call,all-warnings \
-             -Xcompiler -fopenmp,$(subst $(space),$(comma),$(WARN)) -Iinclude -I. -DBOOST_TEST_DYN_LINK
-LIBS := -lboost_unit_test_framework -lgsl -lgslcblas -lboost_iostreams -lboost_filesystem -lboost_system
+             -Xcompiler -fopenmp,$(subst $(space),$(comma),$(WARN)) -Iinclude -I. -DBLAZE_TEST_HEADER_ONLY
+# The GPU machine has Boost headers but not its compiled libraries: CUDA builds use the header-only
+# Boost.Test, and studies plot only where gnuplot-iostream was found at build time.
+TEST_LIBS_cpu := -lboost_unit_test_framework
+TEST_LIBS_cuda :=
+PLOT_LIBS := $(if $(wildcard /usr/include/gnuplot-iostream.h),-lboost_iostreams -lboost_filesystem -lboost_system)
 
 HEADERS := $(shell find include kernels verification studies bench -name '*.hpp')
 TEST_SRC := $(wildcard verification/*.cpp)
@@ -27,6 +31,7 @@ STUDIES := $(notdir $(wildcard studies/*))
 
 .PHONY: deps test run bench clean build-cpu build-cuda check-cuda figures
 .DEFAULT_GOAL := run
+.SECONDARY:
 
 deps:
 	@tools/ensure_deps.sh
@@ -40,21 +45,21 @@ build/cuda/%.o: %.cpp $(HEADERS)
 	$(NVCC) $(NVCCFLAGS) -x cu -c $< -o $@
 
 build/cpu/blaze_tests: $(TEST_SRC:%.cpp=build/cpu/%.o)
-	$(CXX) -fopenmp $^ -o $@ $(LIBS)
+	$(CXX) -fopenmp $^ -o $@ $(TEST_LIBS_cpu)
 build/cuda/blaze_tests: $(TEST_SRC:%.cpp=build/cuda/%.o)
-	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(LIBS)
+	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(TEST_LIBS_cuda)
 
 build/cpu/study_%: build/cpu/studies/%/main.o
-	$(CXX) -fopenmp $^ -o $@ $(LIBS)
+	$(CXX) -fopenmp $^ -o $@ $(PLOT_LIBS)
 build/cuda/study_%: build/cuda/studies/%/main.o
-	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(LIBS)
-build/cpu/bench: build/cpu/bench/bench.o
-	$(CXX) -fopenmp $^ -o $@ $(LIBS)
-build/cuda/bench: build/cuda/bench/bench.o
-	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(LIBS)
+	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(PLOT_LIBS)
+build/cpu/blaze_bench: build/cpu/bench/bench.o
+	$(CXX) -fopenmp $^ -o $@
+build/cuda/blaze_bench: build/cuda/bench/bench.o
+	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-build-cpu: build/cpu/blaze_tests $(STUDIES:%=build/cpu/study_%) build/cpu/bench
-build-cuda: build/cuda/blaze_tests $(STUDIES:%=build/cuda/study_%) build/cuda/bench
+build-cpu: build/cpu/blaze_tests $(STUDIES:%=build/cpu/study_%) build/cpu/blaze_bench
+build-cuda: build/cuda/blaze_tests $(STUDIES:%=build/cuda/study_%) build/cuda/blaze_bench
 
 # Compile (not run) the CUDA build so GPU code cannot rot unseen.
 check-cuda:
@@ -84,8 +89,8 @@ run: deps
 	build/$(RUN_BACKEND)/study_hopper studies/hopper/hopper.params
 
 bench: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) build/$(RUN_BACKEND)/bench
-	build/$(RUN_BACKEND)/bench --out bench/results
+	@$(MAKE) --no-print-directory -j$(NPROC) build/$(RUN_BACKEND)/blaze_bench
+	build/$(RUN_BACKEND)/blaze_bench --out bench/results
 
 clean:
 	rm -rf build

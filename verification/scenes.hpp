@@ -7,6 +7,7 @@
 #include "blaze/laws/linear_spring_dashpot.hpp"
 #include "blaze/sim/energy.hpp"
 #include "blaze/sim/simulation.hpp"
+#include "blaze/scenes/gravity_packing.hpp"
 #include "verification/tolerances.hpp"
 
 namespace blaze::test {
@@ -61,44 +62,6 @@ ParticleState<Real> random_spheres(int n, double r_min, double r_max, double sid
     s.add_sphere(vec_cast<Real>(x), static_cast<Real>(r_min + (r_max - r_min) * u(rng)), Real(2500), 0);
   }
   return s;
-}
-
-// A loose lattice of spheres above a floor inside a box of four walls, with random velocities:
-// the packing scene used for backend agreement and benchmarks.
-template <class Real>
-struct Packing {
-  ParticleState<Real> particles;
-  World<Real> world;
-  SimulationParams<Real> params;
-};
-
-template <class Real>
-Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n)) * 1.0));
-  const double pitch = 2.1 * radius;
-  const double half = 0.5 * side * pitch + radius;
-  Packing<Real> p;
-  for (int k = 0; k < n; ++k) {
-    const int ix = k % side, iz = (k / side) % side, iy = k / (side * side);
-    const Vec3<double> x{(ix - 0.5 * (side - 1)) * pitch, radius * 1.05 + iy * pitch, (iz - 0.5 * (side - 1)) * pitch};
-    const double r = radius * (1 + 0.02 * u(rng));
-    p.particles.add_sphere(vec_cast<Real>(x), static_cast<Real>(r), Real(2500), 0,
-                           vec_cast<Real>(Vec3<double>{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)}));
-  }
-  const double h = 2 * radius * 1.05 + (n / (side * side) + 2) * pitch;
-  using V = Vec3<double>;
-  p.world.polygons = {
-      PlanarPolygon<Real>::make({{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}}, 1),
-      PlanarPolygon<Real>::make({V{-half, 0, -half}, {-half, h, -half}, {-half, h, half}, {-half, 0, half}}, 1),
-      PlanarPolygon<Real>::make({V{half, 0, half}, {half, h, half}, {half, h, -half}, {half, 0, -half}}, 1),
-      PlanarPolygon<Real>::make({V{half, 0, -half}, {half, h, -half}, {-half, h, -half}, {-half, 0, -half}}, 1),
-      PlanarPolygon<Real>::make({V{-half, 0, half}, {-half, h, half}, {half, h, half}, {half, 0, half}}, 1)};
-  p.params = {static_cast<Real>(dt), Vec3<Real>{0, Real(-9.81), 0},
-              vec_cast<Real>(V{-half - 4 * radius, -4 * radius, -half - 4 * radius}),
-              vec_cast<Real>(V{half + 4 * radius, h + 4 * radius, half + 4 * radius}), static_cast<Real>(0.2 * radius)};
-  return p;
 }
 
 }  // namespace blaze::test

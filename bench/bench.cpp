@@ -1,0 +1,136 @@
+// make bench: particle-steps per second of densely packed spheres under gravity at N = 1e4 ... 1e7
+// (GPU) or ... 1e6 (CPU), with per-phase times, for float and double and both normal laws. The bed
+// starts as a lattice in contact (pitch = one diameter, radii +-2%), agitated by random velocities
+// and overlap; each case runs warm-up steps first, then a timed stretch without
+// synchronisation (throughput), then a stretch with every phase fenced (the phase split).
+// Prints a table and writes bench/results/<backend>-<date>.csv.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+#include "blaze/contact/sphere.hpp"
+#include "blaze/exec/device_info.hpp"
+#include "blaze/io/manifest.hpp"
+#include "blaze/laws/hertz.hpp"
+#include "blaze/laws/history_free_friction.hpp"
+#include "blaze/laws/linear_spring_dashpot.hpp"
+#include "blaze/scenes/gravity_packing.hpp"
+
+using namespace blaze;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846, kRadius = 1e-3, kDensity = 2500, kStiffness = 1e4;
+const char* kPhases[] = {"rebuild-check", "hash", "sort", "reorder", "neighbours", "contacts", "walls", "integrate"};
+
+struct Row {
+  std::string law, precision;
+  long n = 0, steps = 0;
+  double rate = 0, bytes_per_particle = 0;
+  std::uint64_t builds = 0;
+  Index capacity = 0;
+  std::vector<double> phase_ms;  // per step
+};
+
+template <class Law>
+Law make_law();
+template <>
+ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction> make_law() {
+  return {LinearSpringDashpot<float>::from_restitution(kStiffness, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
+}
+template <>
+ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction> make_law() {
+  return {LinearSpringDashpot<double>::from_restitution(kStiffness, 0.5), HistoryFreeFriction<double>::make(0.4, 0.05)};
+}
+template <>
+ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
+  // K_n such that a contact at 1 m/s lasts about as long as the linear one.
+  return {Hertz<float>::from_stiffness(3e7, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
+}
+
+template <class Law>
+Row run_case(const char* law_name, long n, long warmup, long steps) {
+  using Real = typename Law::real_type;
+  const double m = kDensity * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius;
+  const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
+  const auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, 2.0);  // in contact from the start
+  PairTable<Law> laws;
+  laws.set(0, 0, make_law<Law>());
+  laws.set(0, 1, make_law<Law>());
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet> sim(scene.params, laws, scene.world, scene.particles);
+  sim.run(static_cast<std::uint64_t>(warmup));
+  fence(DefaultSpace{});
+  const auto builds0 = sim.neighbour_builds();
+  const auto t0 = std::chrono::steady_clock::now();
+  sim.run(static_cast<std::uint64_t>(steps));
+  fence(DefaultSpace{});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Row row{law_name, sizeof(Real) == 4 ? "float" : "double", sim.size(), steps,
+          static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
+          static_cast<double>(sim.particle_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
+          sim.neighbour_capacity(), {}};
+  sim.timer().enabled = true;
+  const long phase_steps = std::max(10L, steps / 4);
+  sim.run(static_cast<std::uint64_t>(phase_steps));
+  for (const char* ph : kPhases) {
+    const auto it = sim.timer().seconds().find(ph);
+    row.phase_ms.push_back(it == sim.timer().seconds().end() ? 0.0 : 1e3 * it->second / phase_steps);
+  }
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out_dir = "bench/results";
+  for (int a = 1; a + 1 < argc; ++a)
+    if (std::string(argv[a]) == "--out") out_dir = argv[a + 1];
+  const bool gpu = std::string(DefaultSpace::name) == "gpu";
+  const std::vector<long> sizes = gpu ? std::vector<long>{10000, 100000, 1000000, 10000000}
+                                      : std::vector<long>{10000, 100000, 1000000};
+  const std::string device = device_name(DefaultSpace{}), commit = git_commit(), date = utc_date();
+  std::printf("blaze bench: %s backend on %s, commit %s, %s\n", DefaultSpace::name, device.c_str(), commit.c_str(), date.c_str());
+  std::vector<Row> rows;
+  for (long n : sizes) {
+    // Fewer steps for large N on the CPU keeps make bench to minutes.
+    const long steps = gpu ? 400 : std::max(20L, 2000000L / n * 10 > 400 ? 400 : 2000000L / n * 10);
+    const long warmup = steps;
+    using LinF = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
+    using LinD = ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction>;
+    using HzF = ContactLaw<float, Hertz, HistoryFreeFriction>;
+    rows.push_back(run_case<LinF>("linear", n, warmup, steps));
+    rows.push_back(run_case<LinD>("linear", n, warmup, steps));
+    rows.push_back(run_case<HzF>("hertz", n, warmup, steps));
+    for (std::size_t r = rows.size() - 3; r < rows.size(); ++r)
+      std::printf("  N=%-9ld %-6s %-6s %10.3e particle-steps/s  (%ld steps, %llu rebuilds, %.0f B/particle)\n", rows[r].n,
+                  rows[r].law.c_str(), rows[r].precision.c_str(), rows[r].rate, rows[r].steps,
+                  static_cast<unsigned long long>(rows[r].builds), rows[r].bytes_per_particle);
+    std::fflush(stdout);
+  }
+  std::filesystem::create_directories(out_dir);
+  const std::string file = out_dir + "/" + DefaultSpace::name + "-" + date.substr(0, 10) + ".csv";
+  std::ofstream csv(file);
+  csv << "device,commit,date,backend,N,shape,law,precision,steps,particle_steps_per_s,neighbour_builds,"
+         "neighbour_capacity,bytes_per_particle";
+  for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
+  csv << '\n';
+  std::printf("\n%-9s %-6s %-6s %11s", "N", "law", "prec", "p-steps/s");
+  for (const char* ph : kPhases) std::printf(" %10.10s", ph);
+  std::printf("   (ms/step, phases fenced)\n");
+  for (const auto& r : rows) {
+    csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << r.n << ",sphere," << r.law
+        << ',' << r.precision << ',' << r.steps << ',' << r.rate << ',' << r.builds << ',' << r.capacity << ','
+        << r.bytes_per_particle;
+    std::printf("%-9ld %-6s %-6s %11.3e", r.n, r.law.c_str(), r.precision.c_str(), r.rate);
+    for (double ms : r.phase_ms) {
+      csv << ',' << ms;
+      std::printf(" %10.4f", ms);
+    }
+    csv << '\n';
+    std::printf("\n");
+  }
+  std::printf("wrote %s\n", file.c_str());
+  return 0;
+}
