@@ -1,7 +1,7 @@
 // make bench: particle-steps per second of densely packed spheres under gravity at N = 1e4 ... 1e7
 // (GPU) or ... 1e6 (CPU), with per-phase times, for float and double and both normal laws. The bed
-// starts as a lattice in contact (pitch = one diameter, radii +-2%), agitated by random velocities
-// and overlap; each case runs warm-up steps first, then a timed stretch without
+// is an fcc lattice compressed by 1% of a radius inside a closed box (12 neighbours, all touching);
+// each case runs warm-up steps first, then a timed stretch without
 // synchronisation (throughput), then a stretch with every phase fenced (the phase split).
 // Prints a table and writes bench/results/<backend>-<date>.csv.
 #include <chrono>
@@ -31,7 +31,8 @@ struct Row {
   double rate = 0, bytes_per_particle = 0;
   std::uint64_t builds = 0;
   Index capacity = 0;
-  std::vector<double> phase_ms;  // per step
+  double neighbours = 0, contacts = 0;  // per particle, at the end of the timed stretch
+  std::vector<double> phase_ms;         // per step
 };
 
 template <class Law>
@@ -46,8 +47,8 @@ ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction> make_law() {
 }
 template <>
 ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
-  // K_n such that a contact at 1 m/s lasts about as long as the linear one.
-  return {Hertz<float>::from_stiffness(3e7, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
+  // K_n such that a contact at 1 m/s lasts as long as the linear one (t_c = 2.94 delta_max / v).
+  return {Hertz<float>::from_stiffness(2.3e6, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
 }
 
 template <class Law>
@@ -55,7 +56,9 @@ Row run_case(const char* law_name, long n, long warmup, long steps) {
   using Real = typename Law::real_type;
   const double m = kDensity * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius;
   const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
-  const auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, 2.0);  // in contact from the start
+  // Dense bed: fcc at 0.99 of contact spacing, radii +-0.5%: every neighbour pair overlaps by
+  // 0-2% of a radius, held by six walls.
+  const auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
   PairTable<Law> laws;
   laws.set(0, 0, make_law<Law>());
   laws.set(0, 1, make_law<Law>());
@@ -70,7 +73,21 @@ Row run_case(const char* law_name, long n, long warmup, long steps) {
   Row row{law_name, sizeof(Real) == 4 ? "float" : "double", sim.size(), steps,
           static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
           static_cast<double>(sim.particle_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
-          sim.neighbour_capacity(), {}};
+          sim.neighbour_capacity(), 0, 0, {}};
+  {
+    const auto st = sim.state();
+    const auto nl = sim.neighbour_lists();
+    long listed = 0, touching = 0;
+    for (Index i = 0; i < static_cast<Index>(st.size()); ++i)
+      for (Index k = 0; k < nl.count[i]; ++k) {
+        const Index j = nl.index[static_cast<std::size_t>(k) * nl.stride + i];
+        ++listed;
+        const Real reach = st.radius[i] + st.radius[j];
+        touching += norm2(st.position[j] - st.position[i]) < reach * reach;
+      }
+    row.neighbours = static_cast<double>(listed) / st.size();
+    row.contacts = static_cast<double>(touching) / st.size();
+  }
   sim.timer().enabled = true;
   const long phase_steps = std::max(10L, steps / 4);
   sim.run(static_cast<std::uint64_t>(phase_steps));
@@ -104,16 +121,17 @@ int main(int argc, char** argv) {
     rows.push_back(run_case<LinD>("linear", n, warmup, steps));
     rows.push_back(run_case<HzF>("hertz", n, warmup, steps));
     for (std::size_t r = rows.size() - 3; r < rows.size(); ++r)
-      std::printf("  N=%-9ld %-6s %-6s %10.3e particle-steps/s  (%ld steps, %llu rebuilds, %.0f B/particle)\n", rows[r].n,
-                  rows[r].law.c_str(), rows[r].precision.c_str(), rows[r].rate, rows[r].steps,
-                  static_cast<unsigned long long>(rows[r].builds), rows[r].bytes_per_particle);
+      std::printf("  N=%-9ld %-6s %-6s %10.3e particle-steps/s  (%ld steps, %llu rebuilds, %.1f neighbours, %.1f contacts, %.0f B/particle)\n",
+                  rows[r].n, rows[r].law.c_str(), rows[r].precision.c_str(), rows[r].rate, rows[r].steps,
+                  static_cast<unsigned long long>(rows[r].builds), rows[r].neighbours, rows[r].contacts,
+                  rows[r].bytes_per_particle);
     std::fflush(stdout);
   }
   std::filesystem::create_directories(out_dir);
   const std::string file = out_dir + "/" + DefaultSpace::name + "-" + date.substr(0, 10) + ".csv";
   std::ofstream csv(file);
   csv << "device,commit,date,backend,N,shape,law,precision,steps,particle_steps_per_s,neighbour_builds,"
-         "neighbour_capacity,bytes_per_particle";
+         "neighbour_capacity,neighbours_per_particle,contacts_per_particle,bytes_per_particle";
   for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
   csv << '\n';
   std::printf("\n%-9s %-6s %-6s %11s", "N", "law", "prec", "p-steps/s");
@@ -122,7 +140,7 @@ int main(int argc, char** argv) {
   for (const auto& r : rows) {
     csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << r.n << ",sphere," << r.law
         << ',' << r.precision << ',' << r.steps << ',' << r.rate << ',' << r.builds << ',' << r.capacity << ','
-        << r.bytes_per_particle;
+        << r.neighbours << ',' << r.contacts << ',' << r.bytes_per_particle;
     std::printf("%-9ld %-6s %-6s %11.3e", r.n, r.law.c_str(), r.precision.c_str(), r.rate);
     for (double ms : r.phase_ms) {
       csv << ',' << ms;

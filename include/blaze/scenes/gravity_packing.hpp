@@ -2,6 +2,7 @@
 // above the floor of a box of five planar walls, falling under gravity. Used by the backend
 // agreement test and the benchmarks.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include "blaze/particles/particle_state.hpp"
@@ -17,24 +18,46 @@ struct Packing {
   SimulationParams<Real> params;
 };
 
+enum class Lattice { cubic, fcc };
+
+struct PackingOptions {
+  Lattice lattice = Lattice::cubic;
+  double pitch_in_radii = 2.1;  // nearest-neighbour spacing / nominal radius
+  double radius_spread = 0.02;  // radii uniform in r (1 +- spread)
+  double speed = 0.3;           // m/s, each velocity component uniform in +-speed
+  bool lid = false;             // a sixth wall on top, as close as the lattice spacing allows
+};
+
+// Loose bed (defaults): a cubic lattice with gaps that collapses under gravity and collisions.
+// Dense bed (fcc, pitch < 2, lid): 12 neighbours each, all compressed against their neighbours and
+// the six walls, so the bed stays in contact: the benchmark state.
 template <class Real>
-// pitch: lattice spacing in radii; 2.1 leaves gaps, 2.0 starts the bed in contact (radii vary by
-// +-2%, so about half the lattice neighbours overlap by up to 2% of a radius).
-Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, double pitch_in_radii = 2.1) {
+Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, const PackingOptions& o = {}) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
-  const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n))));
-  const double pitch = pitch_in_radii * radius;
-  const double half = 0.5 * side * pitch + radius;
+  // Sites per cubic cell and their offsets (in cells); the cell side makes neighbours `pitch` apart.
+  const bool fcc = o.lattice == Lattice::fcc;
+  const int per_cell = fcc ? 4 : 1;
+  const double offsets[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  const double pitch = o.pitch_in_radii * radius, cell = fcc ? pitch * std::sqrt(2.0) : pitch;
+  const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n) / per_cell)));
+  // Walls sit half a pitch beyond the outermost sites (fcc: the outer half-cell is partly empty).
+  const double wall_gap = 0.5 * pitch;
+  const double extent = (side - 1 + (fcc ? 0.5 : 0.0)) * cell;
+  const double half = 0.5 * extent + wall_gap;
   Packing<Real> p;
+  double top = 0;
   for (int k = 0; k < n; ++k) {
-    const int ix = k % side, iz = (k / side) % side, iy = k / (side * side);
-    const Vec3<double> x{(ix - 0.5 * (side - 1)) * pitch, radius * 1.05 + iy * pitch, (iz - 0.5 * (side - 1)) * pitch};
-    const double r = radius * (1 + 0.02 * u(rng));
+    const int site = k % per_cell, c = k / per_cell;
+    const int ix = c % side, iz = (c / side) % side, iy = c / (side * side);
+    const Vec3<double> x{(ix + offsets[site][0]) * cell - 0.5 * extent, wall_gap + (iy + offsets[site][1]) * cell,
+                         (iz + offsets[site][2]) * cell - 0.5 * extent};
+    top = std::max(top, x.y);
+    const double r = radius * (1 + o.radius_spread * u(rng));
     p.particles.add_sphere(vec_cast<Real>(x), static_cast<Real>(r), Real(2500), 0,
-                           vec_cast<Real>(Vec3<double>{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)}));
+                           vec_cast<Real>(Vec3<double>{o.speed * u(rng), o.speed * u(rng), o.speed * u(rng)}));
   }
-  const double h = 2 * radius * 1.05 + (n / (side * side) + 2) * pitch;
+  const double h = o.lid ? top + wall_gap : top + 4 * pitch;
   using V = Vec3<double>;
   p.world.polygons = {
       PlanarPolygon<Real>::make({{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}}, 1),
@@ -42,6 +65,8 @@ Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, do
       PlanarPolygon<Real>::make({V{half, 0, half}, {half, h, half}, {half, h, -half}, {half, 0, -half}}, 1),
       PlanarPolygon<Real>::make({V{half, 0, -half}, {half, h, -half}, {-half, h, -half}, {-half, 0, -half}}, 1),
       PlanarPolygon<Real>::make({V{-half, 0, half}, {-half, h, half}, {half, h, half}, {half, 0, half}}, 1)};
+  if (o.lid)
+    p.world.polygons.push_back(PlanarPolygon<Real>::make({V{-half, h, -half}, {half, h, -half}, {half, h, half}, {-half, h, half}}, 1));
   p.params = {static_cast<Real>(dt), Vec3<Real>{0, Real(-9.81), 0},
               vec_cast<Real>(V{-half - 4 * radius, -4 * radius, -half - 4 * radius}),
               vec_cast<Real>(V{half + 4 * radius, h + 4 * radius, half + 4 * radius}), static_cast<Real>(0.2 * radius)};

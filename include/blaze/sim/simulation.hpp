@@ -69,6 +69,20 @@ class Simulation {
   Index neighbour_capacity() const { return broad_.capacity(); }
   const SimulationParams<Real>& params() const { return params_; }
   PhaseTimer<Space>& timer() { return timer_; }
+
+  // Neighbour list on the host, indexed like state() (diagnostics and tests).
+  struct HostNeighbours {
+    std::vector<Index> count, index;
+    Index stride, capacity;
+  };
+  HostNeighbours neighbour_lists() {
+    const NeighbourView nl = broad_.neighbours();
+    HostNeighbours h{std::vector<Index>(store_.size()), std::vector<Index>(static_cast<std::size_t>(nl.capacity) * nl.stride),
+                     nl.stride, nl.capacity};
+    copy_n(nl.count, h.count.size(), h.count.data(), Space{}, Host{});
+    copy_n(nl.index, h.index.size(), h.index.data(), Space{}, Host{});
+    return h;
+  }
   std::size_t particle_bytes() const { return store_.bytes(); }
 
  private:
