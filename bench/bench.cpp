@@ -3,7 +3,9 @@
 // is an fcc lattice compressed by 1% of a radius inside a closed box (12 neighbours, all touching);
 // each case runs warm-up steps first, then a timed stretch without
 // synchronisation (throughput), then a stretch with every phase fenced (the phase split).
-// Prints a table and writes bench/results/<backend>-<date>.csv.
+// Prints a table and writes bench/results/<device>-<date>.csv. Options: --out DIR, --skin S (skin in
+// radii, default 0.2), --max-n N.
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -51,6 +53,8 @@ ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
   return {Hertz<float>::from_stiffness(2.3e6, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
 }
 
+double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
+
 template <class Law>
 Row run_case(const char* law_name, long n, long warmup, long steps) {
   using Real = typename Law::real_type;
@@ -58,7 +62,8 @@ Row run_case(const char* law_name, long n, long warmup, long steps) {
   const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
   // Dense bed: fcc at 0.99 of contact spacing, radii +-0.5%: every neighbour pair overlaps by
   // 0-2% of a radius, held by six walls.
-  const auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
+  auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
+  scene.params.skin = static_cast<Real>(g_skin_fraction * kRadius);
   PairTable<Law> laws;
   laws.set(0, 0, make_law<Law>());
   laws.set(0, 1, make_law<Law>());
@@ -72,7 +77,7 @@ Row run_case(const char* law_name, long n, long warmup, long steps) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Row row{law_name, sizeof(Real) == 4 ? "float" : "double", sim.size(), steps,
           static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
-          static_cast<double>(sim.particle_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
+          static_cast<double>(sim.memory_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
           sim.neighbour_capacity(), 0, 0, {}};
   {
     const auto st = sim.state();
@@ -102,8 +107,13 @@ Row run_case(const char* law_name, long n, long warmup, long steps) {
 
 int main(int argc, char** argv) {
   std::string out_dir = "bench/results";
-  for (int a = 1; a + 1 < argc; ++a)
-    if (std::string(argv[a]) == "--out") out_dir = argv[a + 1];
+  long max_n = 0;
+  for (int a = 1; a + 1 < argc; ++a) {
+    const std::string opt = argv[a];
+    if (opt == "--out") out_dir = argv[a + 1];
+    if (opt == "--skin") g_skin_fraction = std::stod(argv[a + 1]);
+    if (opt == "--max-n") max_n = std::stol(argv[a + 1]);
+  }
   const bool gpu = std::string(DefaultSpace::name) == "gpu";
   const std::vector<long> sizes = gpu ? std::vector<long>{10000, 100000, 1000000, 10000000}
                                       : std::vector<long>{10000, 100000, 1000000};
@@ -111,6 +121,7 @@ int main(int argc, char** argv) {
   std::printf("blaze bench: %s backend on %s, commit %s, %s\n", DefaultSpace::name, device.c_str(), commit.c_str(), date.c_str());
   std::vector<Row> rows;
   for (long n : sizes) {
+    if (max_n > 0 && n > max_n) break;
     // Fewer steps for large N on the CPU keeps make bench to minutes.
     const long steps = gpu ? 400 : std::max(20L, 2000000L / n * 10 > 400 ? 400 : 2000000L / n * 10);
     const long warmup = steps;
@@ -128,9 +139,11 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   std::filesystem::create_directories(out_dir);
-  const std::string file = out_dir + "/" + DefaultSpace::name + "-" + date.substr(0, 10) + ".csv";
+  std::string tag = gpu ? device.substr(0, device.find(" (")) : std::string("cpu");
+  for (char& c : tag) c = c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + (g_skin_fraction != 0.2 ? "-skin" + std::to_string(g_skin_fraction) : "") + ".csv";
   std::ofstream csv(file);
-  csv << "device,commit,date,backend,N,shape,law,precision,steps,particle_steps_per_s,neighbour_builds,"
+  csv << "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,neighbour_builds,"
          "neighbour_capacity,neighbours_per_particle,contacts_per_particle,bytes_per_particle";
   for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
   csv << '\n';
@@ -138,7 +151,7 @@ int main(int argc, char** argv) {
   for (const char* ph : kPhases) std::printf(" %10.10s", ph);
   std::printf("   (ms/step, phases fenced)\n");
   for (const auto& r : rows) {
-    csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << r.n << ",sphere," << r.law
+    csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << g_skin_fraction << ',' << r.n << ",sphere," << r.law
         << ',' << r.precision << ',' << r.steps << ',' << r.rate << ',' << r.builds << ',' << r.capacity << ','
         << r.neighbours << ',' << r.contacts << ',' << r.bytes_per_particle;
     std::printf("%-9ld %-6s %-6s %11.3e", r.n, r.law.c_str(), r.precision.c_str(), r.rate);

@@ -66,6 +66,14 @@ class BroadPhase {
     return removed;
   }
 
+  // Device memory held by the broad phase (grid cells, sort buffers, neighbour list), bytes.
+  std::size_t bytes() const {
+    std::size_t b = (keys_.size() + cell_start_.size() + cell_end_.size()) * sizeof(std::uint32_t);
+    b += (order_.size() + list_.size() + count_.size()) * sizeof(Index);
+    for (const auto& c : reference_) b += c.size() * sizeof(Real);
+    return b;
+  }
+
   NeighbourView neighbours() {
     return {list_.data(), count_.data(), stride_, capacity_};
   }

@@ -83,7 +83,8 @@ class Simulation {
     copy_n(nl.index, h.index.size(), h.index.data(), Space{}, Host{});
     return h;
   }
-  std::size_t particle_bytes() const { return store_.bytes(); }
+  // Particle arrays plus broad phase (not counting the sorter's scratch), bytes.
+  std::size_t memory_bytes() const { return store_.bytes() + broad_.bytes(); }
 
  private:
   static GridSpec<Real> make_grid(const SimulationParams<Real>& prm, const ParticleState<Real>& s) {
