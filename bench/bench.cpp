@@ -55,6 +55,13 @@ ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
 
 double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
 
+std::string skin_tag() {
+  if (g_skin_fraction == 0.2) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "-skin%g", g_skin_fraction);
+  return buf;
+}
+
 template <class Law>
 Row run_case(const char* law_name, long n, long warmup, long steps) {
   using Real = typename Law::real_type;
@@ -141,7 +148,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out_dir);
   std::string tag = gpu ? device.substr(0, device.find(" (")) : std::string("cpu");
   for (char& c : tag) c = c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + (g_skin_fraction != 0.2 ? "-skin" + std::to_string(g_skin_fraction) : "") + ".csv";
+  const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + skin_tag() + ".csv";
   std::ofstream csv(file);
   csv << "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,neighbour_builds,"
          "neighbour_capacity,neighbours_per_particle,contacts_per_particle,bytes_per_particle";
