@@ -73,12 +73,12 @@ endif
 ifeq ($(BACKEND),cuda)
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) build/cuda/blaze_tests
-	OMP_NUM_THREADS=$(NPROC) build/cuda/blaze_tests --log_level=test_suite --report_level=short
+	OMP_NUM_THREADS=$(NPROC) build/cuda/blaze_tests --log_level=message --report_level=short --color_output=no
 else
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) build-cpu
 	@$(MAKE) --no-print-directory check-cuda
-	build/cpu/blaze_tests --log_level=test_suite --report_level=short
+	build/cpu/blaze_tests --log_level=message --report_level=short --color_output=no
 endif
 
 # The main job: the default study on the GPU when one is present.
