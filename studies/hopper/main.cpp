@@ -201,8 +201,11 @@ int main(int argc, char** argv) try {
   manifest["date"] = utc_date();
   manifest["backend"] = DefaultSpace::name;
   manifest["device"] = device_name(DefaultSpace{});
-  manifest["dt_s"] = std::to_string(dt);
-  manifest["wall_time_s"] = std::to_string(wall);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", dt);
+  manifest["dt_s"] = buf;
+  std::snprintf(buf, sizeof buf, "%.3f", wall);
+  manifest["wall_time_s"] = buf;
   manifest["discharged_count"] = std::to_string(discharge.removed_count());
   write_manifest(dir + "/manifest.txt", manifest);
   const bool plotted = plot(dir + "/timeseries.csv", "plots/hopper.png");
