@@ -118,7 +118,7 @@ BOOST_AUTO_TEST_CASE(particles_leaving_the_domain_are_removed_and_counted) {
   sim.run(300);  // 50 m/s for 0.03 s: 1.5 m, out of the 1 m half-box
   BOOST_TEST(sim.removed_count() == 3);
   BOOST_TEST(sim.size() == 7);
-  BOOST_TEST(sim.removed_mass() == mass_out, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(sim.removed_mass() == mass_out, boost::test_tools::tolerance(tol::mass_sum_double));
   for (Index id : sim.state().id) BOOST_TEST(id >= 3);
 }
 

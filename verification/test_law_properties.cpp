@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(damping_and_friction_never_add_energy, Law, Laws) 
     const Vec3<Real> v_rel = vec_cast<Real>(Vec3<double>{u(rng), u(rng), u(rng)});
     const auto f_moving = law.force(g, v_rel, Real(1e-3)), f_still = law.force(g, {0, 0, 0}, Real(1e-3));
     const double power = dot(vec_cast<double>(f_moving - f_still), vec_cast<double>(v_rel));
-    BOOST_TEST(power <= 1e-6 * norm(vec_cast<double>(f_moving)));
+    BOOST_TEST(power <= tol::dissipation_rounding * norm(vec_cast<double>(f_moving)));
     dissipating += power < 0;
   }
   BOOST_TEST(dissipating > 900);  // and it does dissipate

@@ -20,7 +20,7 @@ BOOST_AUTO_TEST_CASE(face_contact_inside_the_polygon) {
   const auto floor = floor_square<double>(0.0, 1.0);
   const auto g = collide_sphere(V{0.3, 0.4, -0.2}, 0.5, floor);
   BOOST_TEST(g.touching);
-  BOOST_TEST(g.overlap == 0.1, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(g.overlap == 0.1, boost::test_tools::tolerance(tol::geometry_double));
   BOOST_TEST(g.normal.y == -1.0);  // from the particle into the wall
   BOOST_TEST(g.r_eff == 0.5);
 }
@@ -39,8 +39,8 @@ BOOST_AUTO_TEST_CASE(rim_contact_at_an_active_edge) {
   // Centre beside the edge x = 1, level with the plate: touches the rim sideways.
   const auto g = collide_sphere(V{1.3, 0.0, 0.2}, 0.5, floor);
   BOOST_TEST(g.touching);
-  BOOST_TEST(g.overlap == 0.2, boost::test_tools::tolerance(1e-12));
-  BOOST_TEST(g.normal.x == -1.0, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(g.overlap == 0.2, boost::test_tools::tolerance(tol::geometry_double));
+  BOOST_TEST(g.normal.x == -1.0, boost::test_tools::tolerance(tol::geometry_double));
   // Centre slightly below the plane still touches the rim (a plate's rim is two-sided).
   BOOST_TEST(collide_sphere(V{1.3, -0.1, 0.2}, 0.5, floor).touching);
 }
@@ -61,9 +61,9 @@ BOOST_AUTO_TEST_CASE(cylinder_inside_contact) {
   const auto drum = Cylinder<double>::make({0, 0, 0}, {0, 0, 2}, 1.0, 1.0, 0);
   const auto g = collide_sphere(V{0, -0.7, 0.5}, 0.4, drum);
   BOOST_TEST(g.touching);
-  BOOST_TEST(g.overlap == 0.1, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(g.overlap == 0.1, boost::test_tools::tolerance(tol::geometry_double));
   BOOST_TEST(g.normal.y == -1.0);
-  BOOST_TEST(g.r_eff == 0.4 * 1.0 / 0.6, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(g.r_eff == 0.4 * 1.0 / 0.6, boost::test_tools::tolerance(tol::geometry_double));
   BOOST_TEST(!collide_sphere(V{0, -0.5, 0.5}, 0.4, drum).touching);  // clear of the wall
   BOOST_TEST(!collide_sphere(V{0, -0.7, 1.5}, 0.4, drum).touching);  // past the end
 }

@@ -57,4 +57,17 @@ constexpr double restitution_linear = 1e-2;
 constexpr double cpu_gpu_position_over_radius = 1e-9;
 constexpr double cpu_gpu_velocity_over_scale = 1e-7;
 
+// --- geometry and bookkeeping ---
+// Closed-form contact geometry in double: a handful of roundings of O(1) numbers.
+constexpr double geometry_double = 1e-12;
+// Sums of a few masses in double, in a different order than the reference.
+constexpr double mass_sum_double = 1e-12;
+// Power of the dissipative forces may be "positive" only by rounding of the two force evaluations
+// it is the difference of (float: 1e-7 relative, times |v| <= 1.7 m/s).
+constexpr double dissipation_rounding = 1e-6;
+// ASCII VTU output carries 9 significant digits: sums of 500 values read back agree to ~1e-8;
+// a sum of signed coordinates can cancel, so it gets one more digit of room.
+constexpr double vtu_ascii = 1e-7;
+constexpr double vtu_ascii_cancelling = 1e-6;
+
 }  // namespace blaze::tol
