@@ -1,7 +1,10 @@
 // Particle-particle contact forces (thesis Algorithm 2.1, line 4), one thread per particle i:
 // walk i's neighbours, collide with the shape policy, evaluate the law for the material pair, and
 // write only i's force and torque (eq. 2.4: T = r x F). Each pair is evaluated from both sides, so
-// no atomics are needed and the summation order is the same on every backend.
+// no atomics are needed and the summation order is the same on every backend. Both sides call
+// collide(lower index, higher index) and the higher one flips the normal, so the two see exactly
+// the same geometry (Newton's third law holds to the last bit of the geometry).
+// With Features::statistics each particle also counts its vertex-face and edge-edge contacts.
 #pragma once
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/laws/contact_law.hpp"
@@ -10,26 +13,42 @@
 
 namespace blaze {
 
+// Per-particle contact counts by kind (null when statistics are off).
+struct ContactStats {
+  Index* vertex_face;
+  Index* edge_edge;
+};
+
 template <class Shape, class Law, class Kinematics, class Features>
 struct ContactForces {
   using Real = typename Law::real_type;
+  Shape shape;
   ParticleView<Real> p;
   NeighbourView list;
   PairTable<Law> laws;
+  ContactStats stats;
 
   BLAZE_HD void operator()(Index i) const {
-    const auto bi = Shape::body(p, i);
+    const auto bi = shape.body(p, i);
     const Vec3<Real> vi = p.velocity.get(i);
     const Vec3<Real> wi = Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0};
     const Real inv_mi = p.inv_mass[i];
     const int mi = p.material[i];
     Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
+    Index vertex_face = 0, edge_edge = 0;
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.index[k * list.stride + i];
-      const auto bj = Shape::body(p, j);
-      const ContactGeometry<Real> g = Shape::collide(bi, bj);
+      const auto bj = shape.body(p, j);
+      ContactGeometry<Real> g;
+      if (i < j) {
+        g = shape.collide(bi, bj);
+      } else {
+        g = shape.collide(bj, bi);
+        g.normal = -g.normal;
+      }
       if (!g.touching) continue;
+      if constexpr (Features::statistics) (g.kind == ContactKind::edge_edge ? edge_edge : vertex_face) += 1;
       const Vec3<Real> ri = g.point - bi.x;
       const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
       const Vec3<Real> v_rel = Kinematics::relative(vi, wi, ri, p.velocity.get(j), wj, g.point - bj.x);
@@ -40,6 +59,10 @@ struct ContactForces {
     }
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, t);
+    if constexpr (Features::statistics) {
+      stats.vertex_face[i] = vertex_face;
+      stats.edge_edge[i] = edge_edge;
+    }
   }
 };
 

@@ -8,13 +8,14 @@ enum class Stage { prime, pre_force, post_force };
 
 template <class Integrator, class Shape, class Features, class Real, Stage S>
 struct Integrate {
+  Shape shape;
   ParticleView<Real> p;
   Real dt;
   Vec3<Real> gravity;
   BLAZE_HD void operator()(Index i) const {
-    if constexpr (S == Stage::prime) Integrator::template prime<Shape, Features>(p, i, gravity);
-    if constexpr (S == Stage::pre_force) Integrator::template pre_force<Shape, Features>(p, i, dt, gravity);
-    if constexpr (S == Stage::post_force) Integrator::template post_force<Shape, Features>(p, i, dt, gravity);
+    if constexpr (S == Stage::prime) Integrator::template prime<Features>(shape, p, i, gravity);
+    if constexpr (S == Stage::pre_force) Integrator::template pre_force<Features>(shape, p, i, dt, gravity);
+    if constexpr (S == Stage::post_force) Integrator::template post_force<Features>(shape, p, i, dt, gravity);
   }
 };
 

@@ -12,12 +12,13 @@ namespace blaze {
 template <class Shape, class Law, class Kinematics, class Features>
 struct WorldForces {
   using Real = typename Law::real_type;
+  Shape shape;
   ParticleView<Real> p;
   WorldView<Real> world;
   PairTable<Law> laws;
 
   BLAZE_HD void operator()(Index i) const {
-    const auto body = Shape::body(p, i);
+    const auto body = shape.body(p, i);
     const Vec3<Real> v = p.velocity.get(i);
     const Vec3<Real> w = Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0};
     const Real m = Real(1) / p.inv_mass[i];
@@ -33,9 +34,9 @@ struct WorldForces {
       if constexpr (Features::rotation) t += cross(ri, fw);
     };
     for (int k = 0; k < world.polygon_count; ++k)
-      apply(Shape::collide_world(body, world.polygons[k]), world.polygons[k].material);
+      apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material);
     for (int k = 0; k < world.cylinder_count; ++k)
-      apply(Shape::collide_world(body, world.cylinders[k]), world.cylinders[k].material);
+      apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material);
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
   }

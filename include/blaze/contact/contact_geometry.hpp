@@ -4,10 +4,15 @@
 //   point   contact point, m (torque arm r = point - x_i)
 //   r_eff   effective radius of curvature 1/(1/r_i + 1/r_j), m (walls: flat = infinite radius of j;
 //           concave drum = negative curvature), used by Hertzian laws
+//   kind    vertex-face (also sphere and wall contacts) or edge-edge, for collision statistics
+//           (thesis Fig 3.27)
 #pragma once
+#include <cstdint>
 #include "blaze/core/vec3.hpp"
 
 namespace blaze {
+
+enum class ContactKind : std::uint8_t { vertex_face = 0, edge_edge = 1 };
 
 template <class Real>
 struct ContactGeometry {
@@ -16,8 +21,9 @@ struct ContactGeometry {
   Real overlap;
   Vec3<Real> point;
   Real r_eff;
+  ContactKind kind = ContactKind::vertex_face;
 
-  BLAZE_HD static ContactGeometry none() { return {false, {0, 0, 0}, 0, {0, 0, 0}, 0}; }
+  BLAZE_HD static ContactGeometry none() { return {false, {0, 0, 0}, 0, {0, 0, 0}, 0, ContactKind::vertex_face}; }
 };
 
 }  // namespace blaze

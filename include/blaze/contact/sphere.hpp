@@ -3,7 +3,7 @@
 //
 //   delta = r_i + r_j - |x_j - x_i|,  n = (x_j - x_i) / |x_j - x_i|,
 //   contact point = x_i + n (r_i - delta/2)   (middle of the overlap),  R* = r_i r_j / (r_i + r_j)
-// Angular acceleration: alpha = T / I with I = (2/5) m r^2 (isotropic).
+// Rotation: isotropic inertia I = (2/5) m r^2, so L = I w in any frame.
 #pragma once
 #include "blaze/contact/contact_geometry.hpp"
 #include "blaze/particles/particle_store.hpp"
@@ -22,12 +22,12 @@ struct SphereShape {
   };
 
   template <class Real>
-  BLAZE_HD static Body<Real> body(const ParticleView<Real>& p, Index i) {
+  BLAZE_HD Body<Real> body(const ParticleView<Real>& p, Index i) const {
     return {p.position.get(i), p.radius[i], i};
   }
 
   template <class Real>
-  BLAZE_HD static ContactGeometry<Real> collide(const Body<Real>& a, const Body<Real>& b) {
+  BLAZE_HD ContactGeometry<Real> collide(const Body<Real>& a, const Body<Real>& b) const {
     const Vec3<Real> d = b.x - a.x;
     const Real reach = a.r + b.r;
     const Real d2 = norm2(d);
@@ -42,13 +42,26 @@ struct SphereShape {
 
   // Contact with a world object (planar polygon, cylinder, ...): its collide_sphere() overload.
   template <class Real, class Object>
-  BLAZE_HD static ContactGeometry<Real> collide_world(const Body<Real>& a, const Object& w) {
+  BLAZE_HD ContactGeometry<Real> collide_world(const Body<Real>& a, const Object& w) const {
     return collide_sphere(a.x, a.r, w);
   }
 
+  // Rotation steps the integrators call. kick: w += I^-1 T h. drift: turn q by w dt (w is constant
+  // for an isotropic body).
   template <class Real>
-  BLAZE_HD static Vec3<Real> angular_acceleration(const ParticleView<Real>& p, Index i, const Vec3<Real>& torque) {
-    return torque * p.inv_inertia[i];
+  BLAZE_HD Vec3<Real> kick_rotation(const ParticleView<Real>& p, Index i, const Quat<Real>&, const Vec3<Real>& w,
+                                    const Vec3<Real>& torque, Real h) const {
+    return w + torque * (p.inv_inertia[i] * h);
+  }
+  template <class Real>
+  BLAZE_HD void drift_rotation(const ParticleView<Real>&, Index, Quat<Real>& q, Vec3<Real>& w, Real dt) const {
+    q = integrate_orientation(q, w, dt);
+  }
+  // Principal moments for host snapshots.
+  template <class Real>
+  Vec3<Real> principal_inertia(Real inv_inertia, std::uint8_t) const {
+    const Real i = Real(1) / inv_inertia;
+    return {i, i, i};
   }
 };
 

@@ -17,8 +17,9 @@ struct ParticleState {
   std::vector<Quat<Real>> orientation;      // unit quaternion, body to world
   std::vector<Real> radius;                 // m (bounding radius for non-spheres)
   std::vector<Real> mass;                   // kg
-  std::vector<Real> inertia;                // kg m^2 (sphere: 2/5 m r^2)
+  std::vector<Vec3<Real>> inertia;          // kg m^2, principal moments in the body frame (sphere: 2/5 m r^2)
   std::vector<std::uint8_t> material;       // index into the material-pair table
+  std::vector<std::uint8_t> type;           // index into the shape table (polyhedra; 0 for spheres)
   std::vector<Index> id;                    // stable identity, survives re-sorting
 
   std::size_t size() const { return position.size(); }
@@ -33,8 +34,27 @@ struct ParticleState {
     orientation.push_back(Quat<Real>::identity());
     radius.push_back(r);
     mass.push_back(m);
-    inertia.push_back(Real(0.4) * m * r * r);
+    const Real i = Real(0.4) * m * r * r;
+    inertia.push_back({i, i, i});
     material.push_back(mat);
+    type.push_back(0);
+    id.push_back(static_cast<Index>(id.size()));
+  }
+
+  // A rigid body of given mass, principal moments, bounding radius and shape-table type, with its
+  // centre of mass at x and body axes rotated by q.
+  void add_body(const Vec3<Real>& x, const Quat<Real>& q, Real bound_radius, Real m, const Vec3<Real>& principal,
+                std::uint8_t shape_type, std::uint8_t mat, const Vec3<Real>& v = {0, 0, 0},
+                const Vec3<Real>& w = {0, 0, 0}) {
+    position.push_back(x);
+    velocity.push_back(v);
+    angular_velocity.push_back(w);
+    orientation.push_back(q);
+    radius.push_back(bound_radius);
+    mass.push_back(m);
+    inertia.push_back(principal);
+    material.push_back(mat);
+    type.push_back(shape_type);
     id.push_back(static_cast<Index>(id.size()));
   }
 
@@ -42,10 +62,10 @@ struct ParticleState {
     const std::size_t n = size();
     if (velocity.size() != n || angular_velocity.size() != n || orientation.size() != n ||
         radius.size() != n || mass.size() != n || inertia.size() != n || material.size() != n ||
-        id.size() != n)
+        type.size() != n || id.size() != n)
       throw std::invalid_argument("ParticleState: field lengths differ");
     for (std::size_t i = 0; i < n; ++i)
-      if (!(radius[i] > 0) || !(mass[i] > 0) || !(inertia[i] > 0))
+      if (!(radius[i] > 0) || !(mass[i] > 0) || !(inertia[i].x > 0 && inertia[i].y > 0 && inertia[i].z > 0))
         throw std::invalid_argument("ParticleState: particle " + std::to_string(i) +
                                     " needs radius, mass and inertia > 0");
   }

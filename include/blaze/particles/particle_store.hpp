@@ -16,8 +16,9 @@ struct ParticleView {
   QuatField<Real> orientation;
   const Real* radius;
   const Real* inv_mass;
-  const Real* inv_inertia;
+  const Real* inv_inertia;  // 1/(kg m^2), isotropic bodies (spheres); others use their shape table
   const std::uint8_t* material;
+  const std::uint8_t* type;
   const Index* id;
 };
 
@@ -38,7 +39,7 @@ class ParticleStore {
     std::vector<Real> inv_m(n_), inv_i(n_);
     for (Index i = 0; i < n_; ++i) {
       inv_m[i] = Real(1) / s.mass[i];
-      inv_i[i] = Real(1) / s.inertia[i];
+      inv_i[i] = Real(1) / s.inertia[i].x;
     }
     upload_vec3(position_, s.position);
     upload_vec3(velocity_, s.velocity);
@@ -60,11 +61,13 @@ class ParticleStore {
     from_host(inv_mass_, inv_m);
     from_host(inv_inertia_, inv_i);
     from_host(material_, s.material);
+    from_host(type_, s.type);
     from_host(id_, s.id);
     scratch_real_.resize(n_);
   }
 
   // The active particles [0, n) back on the host, in the store's current (sorted) order.
+  // `inertia` is filled by the caller's shape policy from inverse_inertia() and `type`.
   ParticleState<Real> download() const {
     ParticleState<Real> s;
     s.position = download_vec3(position_);
@@ -77,13 +80,14 @@ class ParticleStore {
     s.radius = to_host(radius_, n_);
     s.mass = to_host(inv_mass_, n_);
     for (auto& m : s.mass) m = Real(1) / m;
-    s.inertia = to_host(inv_inertia_, n_);
-    for (auto& m : s.inertia) m = Real(1) / m;
     s.material = to_host(material_, n_);
+    s.type = to_host(type_, n_);
+    s.inertia.resize(n_);
     s.id = to_host(id_, n_);
     return s;
   }
 
+  std::vector<Real> download_inverse_inertia() const { return to_host(inv_inertia_, n_); }
   std::vector<Vec3<Real>> download_force() const { return download_vec3(force_); }
   std::vector<Vec3<Real>> download_torque() const { return download_vec3(torque_); }
 
@@ -91,7 +95,7 @@ class ParticleStore {
     return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
             field(torque_), field(acceleration_prev_),
             {orientation_[0].data(), orientation_[1].data(), orientation_[2].data(), orientation_[3].data()},
-            radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), id_.data()};
+            radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), type_.data(), id_.data()};
   }
 
   Index size() const { return n_; }
@@ -108,6 +112,7 @@ class ParticleStore {
     permute_one(inv_mass_, scratch_real_, perm);
     permute_one(inv_inertia_, scratch_real_, perm);
     permute_one(material_, scratch_u8_, perm);
+    permute_one(type_, scratch_u8_, perm);
     permute_one(id_, scratch_index_, perm);
   }
 
@@ -118,7 +123,7 @@ class ParticleStore {
       for (const auto& c : *f) b += c.size() * sizeof(Real);
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
     b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size()) * sizeof(Real);
-    b += material_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
+    b += material_.size() + type_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
     return b;
   }
 
@@ -158,7 +163,7 @@ class ParticleStore {
   Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_;
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
-  Buffer<std::uint8_t, Space> material_;
+  Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;
   Buffer<std::uint8_t, Space> scratch_u8_;

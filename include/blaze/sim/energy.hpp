@@ -1,5 +1,5 @@
 // System energies from a host snapshot (J), for output and conservation checks:
-//   translational  sum 1/2 m v.v      rotational  sum 1/2 I w.w  (spheres: isotropic I)
+//   translational  sum 1/2 m v.v      rotational  sum 1/2 w_b . diag(I) w_b,  w_b = R^T w (body frame)
 //   potential      sum -m g.x         (zero at the origin)
 #pragma once
 #include "blaze/particles/particle_state.hpp"
@@ -19,7 +19,10 @@ Energies energies(const ParticleState<Real>& s, const Vec3<Real>& gravity) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     const double m = s.mass[i];
     e.translational += 0.5 * m * norm2(vec_cast<double>(s.velocity[i]));
-    e.rotational += 0.5 * static_cast<double>(s.inertia[i]) * norm2(vec_cast<double>(s.angular_velocity[i]));
+    const Quat<double> q{s.orientation[i].w, s.orientation[i].x, s.orientation[i].y, s.orientation[i].z};
+    const Vec3<double> wb = rotate(Quat<double>{q.w, -q.x, -q.y, -q.z}, vec_cast<double>(s.angular_velocity[i]));
+    const Vec3<double> moments = vec_cast<double>(s.inertia[i]);
+    e.rotational += 0.5 * (moments.x * wb.x * wb.x + moments.y * wb.y * wb.y + moments.z * wb.z * wb.z);
     e.potential -= m * dot(g, vec_cast<double>(s.position[i]));
   }
   return e;

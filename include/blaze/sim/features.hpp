@@ -3,11 +3,13 @@
 
 namespace blaze {
 
-template <bool Rotation>
+template <bool Rotation, bool Statistics = false>
 struct FeatureSet {
-  static constexpr bool rotation = Rotation;  // torques, angular velocity, orientation
+  static constexpr bool rotation = Rotation;      // torques, angular velocity, orientation
+  static constexpr bool statistics = Statistics;  // contact counts by kind, every step
 };
 using FullFeatures = FeatureSet<true>;
 using TranslationOnly = FeatureSet<false>;
+using FullFeaturesWithStatistics = FeatureSet<true, true>;
 
 }  // namespace blaze

@@ -32,8 +32,8 @@ class Simulation {
   using Real = typename Law::real_type;
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
-             const ParticleState<Real>& particles)
-      : params_(params), laws_(laws), broad_(make_grid(params, particles), params.skin) {
+             const ParticleState<Real>& particles, const Shape& shape = Shape{})
+      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, particles), params.skin) {
     if (!(params.dt > 0)) throw std::invalid_argument("simulation: dt must be > 0 s");
     if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
     check_materials(laws, world, particles);
@@ -56,7 +56,23 @@ class Simulation {
     for (std::uint64_t s = 0; s < steps; ++s) step();
   }
 
-  ParticleState<Real> state() const { return store_.download(); }
+  ParticleState<Real> state() const {
+    ParticleState<Real> s = store_.download();
+    const auto inv_i = store_.download_inverse_inertia();
+    for (std::size_t k = 0; k < s.size(); ++k) s.inertia[k] = shape_.principal_inertia(inv_i[k], s.type[k]);
+    return s;
+  }
+
+  // Contacts counted in the last force evaluation, by kind (each pair once); needs
+  // Features::statistics.
+  std::pair<long, long> contact_counts() const {
+    static_assert(Features::statistics, "contact counts need FeatureSet<..., true>");
+    long vf = 0, ee = 0;
+    for (Index c : to_host(stats_vertex_face_, store_.size())) vf += c;
+    for (Index c : to_host(stats_edge_edge_, store_.size())) ee += c;
+    return {vf / 2, ee / 2};
+  }
+  const Shape& shape() const { return shape_; }
   std::vector<Vec3<Real>> forces() const { return store_.download_force(); }
   std::vector<Vec3<Real>> torques() const { return store_.download_torque(); }
   Index size() const { return store_.size(); }
@@ -116,7 +132,7 @@ class Simulation {
 
   template <Stage S>
   Integrate<Integrator, Shape, Features, Real, S> integrate() {
-    return {store_.view(), params_.dt, params_.gravity};
+    return {shape_, store_.view(), params_.dt, params_.gravity};
   }
 
   void refresh_neighbours() {
@@ -130,17 +146,25 @@ class Simulation {
 
   void compute_forces() {
     const ParticleView<Real> p = store_.view();
+    ContactStats stats{nullptr, nullptr};
+    if constexpr (Features::statistics) {
+      stats_vertex_face_.resize(std::max<std::size_t>(stats_vertex_face_.size(), p.n));
+      stats_edge_edge_.resize(std::max<std::size_t>(stats_edge_edge_.size(), p.n));
+      stats = {stats_vertex_face_.data(), stats_edge_edge_.data()};
+    }
     timer_.time("contacts", [&] {
-      for_each(Space{}, p.n, ContactForces<Shape, Law, Kinematics, Features>{p, broad_.neighbours(), laws_});
+      for_each(Space{}, p.n, ContactForces<Shape, Law, Kinematics, Features>{shape_, p, broad_.neighbours(), laws_, stats});
     });
     if (!world_.empty())
       timer_.time("walls", [&] {
-        for_each(Space{}, p.n, WorldForces<Shape, Law, Kinematics, Features>{p, world_.view(), laws_});
+        for_each(Space{}, p.n, WorldForces<Shape, Law, Kinematics, Features>{shape_, p, world_.view(), laws_});
       });
   }
 
+  Shape shape_;
   SimulationParams<Real> params_;
   PairTable<Law> laws_;
+  Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
   ParticleStore<Real, Space> store_;
   WorldStore<Real, Space> world_;
   BroadPhase<Real, Space> broad_;

@@ -1,0 +1,70 @@
+// Polyhedron shape data as kernels read it: fixed-capacity arrays (feature_caps.hpp), body frame,
+// one entry per particle type. The whole table travels by value in the kernel's arguments, which
+// CUDA places in the constant bank: every thread of a warp reading vertex k of the same type is
+// one broadcast (the thesis kept its Particle_Object in constant memory, section 2.2.1).
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include "blaze/core/vec3.hpp"
+#include "blaze/shapes/convex_shape.hpp"
+
+namespace blaze {
+
+template <class Real>
+struct PolyhedronData {
+  Vec3<Real> vertex[kMaxVertices];  // m, body frame
+  Vec3<Real> normal[kMaxFaces];     // outward unit normals
+  Real offset[kMaxFaces];           // m: a point x is inside face f's half-space when normal.x <= offset
+  std::uint8_t edge_vertex[kMaxEdges][2];
+  std::uint8_t edge_face[kMaxEdges][2];  // faces left and right of the edge (ConvexShape::Edge)
+  int vertex_count, face_count, edge_count;
+  Real bounding_radius;    // m (bound_R)
+  Real volume;             // m^3
+  Vec3<Real> inv_inertia;  // 1/(kg m^2), principal moments at this type's density
+
+  static PolyhedronData from(const ConvexShape& s, double density) {
+    if (!(density > 0)) throw std::invalid_argument("polyhedron " + s.name + ": density must be > 0 kg/m^3");
+    PolyhedronData d{};
+    d.vertex_count = static_cast<int>(s.vertices.size());
+    d.face_count = static_cast<int>(s.faces.size());
+    d.edge_count = static_cast<int>(s.edges.size());
+    for (int k = 0; k < d.vertex_count; ++k) d.vertex[k] = to_vec(s.vertices[k]);
+    for (int f = 0; f < d.face_count; ++f) {
+      d.normal[f] = to_vec(s.normals[f]);
+      d.offset[f] = static_cast<Real>(s.normals[f].dot(s.centroids[f]));
+    }
+    for (int e = 0; e < d.edge_count; ++e) {
+      d.edge_vertex[e][0] = static_cast<std::uint8_t>(s.edges[e].v0);
+      d.edge_vertex[e][1] = static_cast<std::uint8_t>(s.edges[e].v1);
+      d.edge_face[e][0] = static_cast<std::uint8_t>(s.edges[e].left);
+      d.edge_face[e][1] = static_cast<std::uint8_t>(s.edges[e].right);
+    }
+    d.bounding_radius = static_cast<Real>(s.bounding_radius);
+    d.volume = static_cast<Real>(s.volume);
+    const Eigen::Vector3d inv = (density * s.inertia_per_density).cwiseInverse();
+    d.inv_inertia = to_vec(inv);
+    return d;
+  }
+
+ private:
+  static Vec3<Real> to_vec(const Eigen::Vector3d& v) {
+    return {static_cast<Real>(v.x()), static_cast<Real>(v.y()), static_cast<Real>(v.z())};
+  }
+};
+
+template <class Real>
+struct PolyhedronTable {
+  static constexpr int kMaxTypes = 4;
+  PolyhedronData<Real> type[kMaxTypes];
+  int count = 0;
+
+  int add(const ConvexShape& s, double density) {
+    if (count == kMaxTypes)
+      throw std::invalid_argument("polyhedron table: more than " + std::to_string(kMaxTypes) + " particle types");
+    type[count] = PolyhedronData<Real>::from(s, density);
+    return count++;
+  }
+};
+
+}  // namespace blaze
