@@ -21,6 +21,7 @@ struct PolyhedronData {
   int vertex_count, face_count, edge_count;
   Real bounding_radius;    // m (bound_R)
   Real volume;             // m^3
+  Real mass;               // kg, at this type's density
   Vec3<Real> inv_inertia;  // 1/(kg m^2), principal moments at this type's density
 
   static PolyhedronData from(const ConvexShape& s, double density) {
@@ -42,6 +43,7 @@ struct PolyhedronData {
     }
     d.bounding_radius = static_cast<Real>(s.bounding_radius);
     d.volume = static_cast<Real>(s.volume);
+    d.mass = static_cast<Real>(density * s.volume);
     const Eigen::Vector3d inv = (density * s.inertia_per_density).cwiseInverse();
     d.inv_inertia = to_vec(inv);
     return d;

@@ -65,6 +65,16 @@ struct PlanarPolygon {
     p.material = material;
     return p;
   }
+
+  // True when q (a point of the plane) lies inside the polygon or on its boundary.
+  BLAZE_HD bool contains(const Vec3<Real>& q) const {
+    for (int k = 0; k < vertex_count; ++k) {
+      const Vec3<Real> a = vertex[k];
+      const Vec3<Real> e = vertex[k + 1 < vertex_count ? k + 1 : 0] - a;
+      if (dot(cross(e, q - a), normal) < Real(0)) return false;
+    }
+    return true;
+  }
 };
 
 template <class Real>
