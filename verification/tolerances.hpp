@@ -74,6 +74,20 @@ constexpr double contact_false_gap = 1e-12;
 constexpr double contact_face_preference = 1e-5;
 constexpr double contact_normal_degrees = 1.0;
 
+// Torque-free tumbling box, 1e5 steps of 1e-4 s at |w| = 20 rad/s (issue 3, acceptance 5): L is
+// carried exactly by the midpoint drift, so only rounding moves it; the energy error of the
+// second-order rotation is ~(w dt)^2 = 4e-6 and bounded.
+constexpr double tumbling_angular_momentum = 1e-6;
+constexpr double tumbling_energy = 1e-4;
+// Elastic polyhedron collisions (issue 3, acceptance 4): kinetic energy after separation within
+// the issue's 0.5%, over this many cases (half cube-cube, half octahedron-cube).
+constexpr double polyhedron_collision_energy = 5e-3;
+constexpr long polyhedron_collision_cases = 10000;
+// Interim regression bounds (issue 3 acceptance 4 is not met yet, see the test): measured 1.5% of
+// cases beyond 0.5% and a worst case of 3%; bounds at 2.5% and 5%.
+constexpr double polyhedron_collision_outlier_fraction = 0.025;
+constexpr double polyhedron_collision_worst = 0.05;
+
 // --- geometry and bookkeeping ---
 // Closed-form contact geometry in double: a handful of roundings of O(1) numbers.
 constexpr double geometry_double = 1e-12;

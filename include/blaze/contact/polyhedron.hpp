@@ -10,10 +10,11 @@
 // contact normal is the axis of least penetration and the overlap is that penetration (the
 // minimum translation that separates them), so the normal is continuous while bodies separate.
 // Faces are preferred to edges unless an edge axis is shallower by more than 1e-5 of the sizes.
-// Contact point: for a face axis, the mean of the vertices of each body inside the other (thesis
-// Type 1 contact points); if there are none, the deepest vertex moved to the middle of the
-// overlap. For an edge axis, the midpoint of the closest points of the two edges (thesis
-// eqs. 3.4-3.5, clamped to the segments).
+// Contact point: for a face axis, the deepest vertex of the incident body (the lever arm that
+// keeps the force conservative: the overlap is its penetration), spread over the vertices within
+// 10% of that depth so flat face-face contacts push through their centre (incident_point). For an
+// edge axis, the midpoint of the closest points of the two edges (thesis eqs. 3.4-3.5, clamped).
+// The thesis's Type 1 point is the mean of all contained vertices; it is kept with ThesisNormal.
 //
 // The thesis picks the normal differently (sections 2.2.4, 3.2.3): the face of the other body
 // nearest to the deepest contained vertex ("the largest penetration distance"), or for edge-edge
@@ -150,63 +151,46 @@ struct PolyhedronShape {
     Real overlap = -best;
     ContactKind contact_kind = ContactKind::vertex_face;
     const Real tol = Real(1e-6) * reach;
-    // Type 1 contact points (and, for the thesis option, its normal).
-    int inside = 0;
-    Real thesis_depth = -1;
-    Vec3<Real> thesis_normal{0, 0, 0};
-    for (int k = 0; k < B.vertex_count; ++k) {
-      Real nearest = reach;
-      int face = -1;
-      bool in = true;
-      for (int g = 0; g < A.face_count && in; ++g) {
-        const Real pen = A.offset[g] - dot(A.normal[g], vb[k]);
-        in = pen >= -tol;
-        if (pen < nearest) nearest = pen, face = g;
-      }
-      if (!in) continue;
-      point += vb[k];
-      ++inside;
-      if (nearest > thesis_depth) thesis_depth = nearest, thesis_normal = A.normal[face];
-    }
-    for (int k = 0; k < A.vertex_count; ++k) {
-      Real nearest = reach;
-      int face = -1;
-      bool in = true;
-      for (int g = 0; g < B.face_count && in; ++g) {
-        const Real pen = hb[g] - dot(nb[g], A.vertex[k]);
-        in = pen >= -tol;
-        if (pen < nearest) nearest = pen, face = g;
-      }
-      if (!in) continue;
-      point += A.vertex[k];
-      ++inside;
-      if (nearest > thesis_depth) thesis_depth = nearest, thesis_normal = -nb[face];
-    }
     if (kind == 2) {
       n = edge_axis;
       contact_kind = ContactKind::edge_edge;
       const Vec3<Real> a0 = A.vertex[A.edge_vertex[edge_a][0]], b0 = vb[B.edge_vertex[edge_b][0]];
       point = segment_midpoint(a0, A.vertex[A.edge_vertex[edge_a][1]] - a0, b0, vb[B.edge_vertex[edge_b][1]] - b0);
+    } else if (kind == 0) {
+      n = A.normal[index];
+      point = incident_point(A.normal, A.offset, index, vb, B.vertex_count);
     } else {
-      n = kind == 0 ? A.normal[index] : -nb[index];
-      if (inside > 0) {
-        point *= Real(1) / static_cast<Real>(inside);
-      } else if (kind == 0) {  // deepest vertex of B, moved to the middle of the overlap
-        int deepest = 0;
-        for (int k = 1; k < B.vertex_count; ++k)
-          if (dot(n, vb[k]) < dot(n, vb[deepest])) deepest = k;
-        point = vb[deepest] + n * (Real(0.5) * overlap);
-      } else {
-        int deepest = 0;
-        for (int k = 1; k < A.vertex_count; ++k)
-          if (dot(n, A.vertex[k]) > dot(n, A.vertex[deepest])) deepest = k;
-        point = A.vertex[deepest] - n * (Real(0.5) * overlap);
-      }
+      n = -nb[index];
+      point = incident_point(nb, hb, index, A.vertex, A.vertex_count);
     }
     if constexpr (std::is_same_v<NormalChoice, ThesisNormal>) {
+      // Type 1: contained vertices of either body; the deepest one's nearest face gives the normal.
+      int inside = 0;
+      Real deepest = -1;
+      Vec3<Real> sum{0, 0, 0}, thesis_normal{0, 0, 0};
+      for (int side = 0; side < 2; ++side) {
+        const int count = side == 0 ? B.vertex_count : A.vertex_count;
+        for (int k = 0; k < count; ++k) {
+          const Vec3<Real> v = side == 0 ? vb[k] : A.vertex[k];
+          Real nearest = reach;
+          int face = -1;
+          bool in = true;
+          const int faces = side == 0 ? A.face_count : B.face_count;
+          for (int g = 0; g < faces && in; ++g) {
+            const Real pen = side == 0 ? A.offset[g] - dot(A.normal[g], v) : hb[g] - dot(nb[g], v);
+            in = pen >= -tol;
+            if (pen < nearest) nearest = pen, face = g;
+          }
+          if (!in) continue;
+          sum += v;
+          ++inside;
+          if (nearest > deepest) deepest = nearest, thesis_normal = side == 0 ? A.normal[face] : -nb[face];
+        }
+      }
       if (inside > 0) {
         n = thesis_normal;
-        overlap = thesis_depth;
+        overlap = deepest;
+        point = sum * (Real(1) / static_cast<Real>(inside));
         contact_kind = ContactKind::vertex_face;
       } else {
         n = point + (t - point);  // (PC - x_A) + (x_B - PC), x_A = 0 in A's frame
@@ -286,6 +270,26 @@ struct PolyhedronShape {
   }
 
  private:
+  // Contact point for a face axis of the reference body (planes `normal`/`offset`, face `f`): the
+  // incident body's vertices that penetrate the face plane to within 10% of the deepest,
+  // weighted by how far they reach into that band. The overlap is the deepest vertex's
+  // penetration, so that vertex is the lever arm that keeps the contact force conservative; the
+  // band only spreads the arm over (nearly) flat contacts, which it centres, and its weights
+  // vary continuously as vertices enter it.
+  BLAZE_HD static Vec3<Real> incident_point(const Vec3<Real>* normal, const Real* offset, int f, const Vec3<Real>* v,
+                                            int count) {
+    Real deepest = offset[f] - dot(normal[f], v[0]);
+    for (int k = 1; k < count; ++k) deepest = max_r(deepest, offset[f] - dot(normal[f], v[k]));
+    const Real floor = deepest - (Real(0.1) * abs_r(deepest) + Real(1e-12) * abs_r(offset[f]));
+    Vec3<Real> sum{0, 0, 0};
+    Real weight = 0;
+    for (int k = 0; k < count; ++k) {
+      const Real w = offset[f] - dot(normal[f], v[k]) - floor;
+      if (w > Real(0)) sum += v[k] * w, weight += w;
+    }
+    return sum * (Real(1) / weight);
+  }
+
   // R diag(I^-1) R^T v and R diag(I) R^T v.
   BLAZE_HD Vec3<Real> inverse_inertia_times(int type, const Mat3<Real>& r, const Vec3<Real>& v) const {
     const Vec3<Real> inv = table.type[type].inv_inertia;
