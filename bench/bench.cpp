@@ -19,6 +19,8 @@
 #include "blaze/laws/history_free_friction.hpp"
 #include "blaze/laws/linear_spring_dashpot.hpp"
 #include "blaze/scenes/gravity_packing.hpp"
+#include "blaze/scenes/polyhedron_packing.hpp"
+#include "blaze/shapes/shape_io.hpp"
 
 using namespace blaze;
 
@@ -28,12 +30,13 @@ constexpr double kPi = 3.14159265358979323846, kRadius = 1e-3, kDensity = 2500, 
 const char* kPhases[] = {"rebuild-check", "hash", "sort", "reorder", "neighbours", "contacts", "walls", "integrate"};
 
 struct Row {
-  std::string law, precision;
+  std::string shape, law, precision;
   long n = 0, steps = 0;
   double rate = 0, bytes_per_particle = 0;
   std::uint64_t builds = 0;
   Index capacity = 0;
   double neighbours = 0, contacts = 0;  // per particle, at the end of the timed stretch
+  double edge_fraction = 0;             // edge-edge share of the contacts (thesis Fig 3.27)
   std::vector<double> phase_ms;         // per step
 };
 
@@ -62,8 +65,41 @@ std::string skin_tag() {
   return buf;
 }
 
+// Warm-up, then the timed stretch, then the fenced stretch for the phase split.
+template <class Sim>
+Row measure(Sim& sim, const char* shape, const char* law_name, const char* precision, long warmup, long steps) {
+  sim.run(static_cast<std::uint64_t>(warmup));
+  fence(DefaultSpace{});
+  const auto builds0 = sim.neighbour_builds();
+  const auto t0 = std::chrono::steady_clock::now();
+  sim.run(static_cast<std::uint64_t>(steps));
+  fence(DefaultSpace{});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Row row{shape, law_name, precision, sim.size(), steps,
+          static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
+          static_cast<double>(sim.memory_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
+          sim.neighbour_capacity(), 0, 0, 0, {}};
+  const auto nl = sim.neighbour_lists();
+  long listed = 0;
+  for (Index c : nl.count) listed += c;
+  row.neighbours = static_cast<double>(listed) / static_cast<double>(sim.size());
+  sim.timer().enabled = true;
+  const long phase_steps = std::max(10L, steps / 4);
+  sim.run(static_cast<std::uint64_t>(phase_steps));
+  for (const char* ph : kPhases) {
+    const auto it = sim.timer().seconds().find(ph);
+    row.phase_ms.push_back(it == sim.timer().seconds().end() ? 0.0 : 1e3 * it->second / phase_steps);
+  }
+  const auto [vertex_face, edge_edge] = sim.contact_counts();
+  row.contacts = 2.0 * static_cast<double>(vertex_face + edge_edge) / static_cast<double>(sim.size());
+  row.edge_fraction = vertex_face + edge_edge > 0 ? static_cast<double>(edge_edge) / static_cast<double>(vertex_face + edge_edge) : 0;
+  return row;
+}
+
+using Stats = FeatureSet<true, true>;
+
 template <class Law>
-Row run_case(const char* law_name, long n, long warmup, long steps) {
+Row sphere_case(const char* law_name, long n, long warmup, long steps) {
   using Real = typename Law::real_type;
   const double m = kDensity * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius;
   const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
@@ -74,40 +110,26 @@ Row run_case(const char* law_name, long n, long warmup, long steps) {
   PairTable<Law> laws;
   laws.set(0, 0, make_law<Law>());
   laws.set(0, 1, make_law<Law>());
-  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet> sim(scene.params, laws, scene.world, scene.particles);
-  sim.run(static_cast<std::uint64_t>(warmup));
-  fence(DefaultSpace{});
-  const auto builds0 = sim.neighbour_builds();
-  const auto t0 = std::chrono::steady_clock::now();
-  sim.run(static_cast<std::uint64_t>(steps));
-  fence(DefaultSpace{});
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  Row row{law_name, sizeof(Real) == 4 ? "float" : "double", sim.size(), steps,
-          static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
-          static_cast<double>(sim.memory_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
-          sim.neighbour_capacity(), 0, 0, {}};
-  {
-    const auto st = sim.state();
-    const auto nl = sim.neighbour_lists();
-    long listed = 0, touching = 0;
-    for (Index i = 0; i < static_cast<Index>(st.size()); ++i)
-      for (Index k = 0; k < nl.count[i]; ++k) {
-        const Index j = nl.index[static_cast<std::size_t>(k) * nl.stride + i];
-        ++listed;
-        const Real reach = st.radius[i] + st.radius[j];
-        touching += norm2(st.position[j] - st.position[i]) < reach * reach;
-      }
-    row.neighbours = static_cast<double>(listed) / st.size();
-    row.contacts = static_cast<double>(touching) / st.size();
-  }
-  sim.timer().enabled = true;
-  const long phase_steps = std::max(10L, steps / 4);
-  sim.run(static_cast<std::uint64_t>(phase_steps));
-  for (const char* ph : kPhases) {
-    const auto it = sim.timer().seconds().find(ph);
-    row.phase_ms.push_back(it == sim.timer().seconds().end() ? 0.0 : 1e3 * it->second / phase_steps);
-  }
-  return row;
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(scene.params, laws, scene.world,
+                                                                                               scene.particles);
+  return measure(sim, "sphere", law_name, sizeof(Real) == 4 ? "float" : "double", warmup, steps);
+}
+
+// Polyhedra of one shape (about 1 cm) falling from a loose lattice in a box, linear law, float.
+Row polyhedron_case(const char* shape_name, long n, long warmup, long steps) {
+  using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
+  PolyhedronShape<float> shape;
+  shape.table.add(load_shape(std::string("data/shapes/") + shape_name + ".shape"), kDensity);
+  const double k = 1e5, dt = kPi * std::sqrt(0.5 * shape.table.type[0].mass / k) / 25;
+  auto scene = polyhedron_packing(shape.table, 0, static_cast<int>(n), 42, dt);
+  scene.params.skin = static_cast<float>(g_skin_fraction * shape.table.type[0].bounding_radius);
+  const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
+  PairTable<Law> laws;
+  laws.set(0, 0, law);
+  laws.set(0, 1, law);
+  Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(
+      scene.params, laws, scene.world, scene.particles, shape);
+  return measure(sim, shape_name, "linear", "float", warmup, steps);
 }
 
 }  // namespace
@@ -135,12 +157,15 @@ int main(int argc, char** argv) {
     using LinF = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
     using LinD = ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction>;
     using HzF = ContactLaw<float, Hertz, HistoryFreeFriction>;
-    rows.push_back(run_case<LinF>("linear", n, warmup, steps));
-    rows.push_back(run_case<LinD>("linear", n, warmup, steps));
-    rows.push_back(run_case<HzF>("hertz", n, warmup, steps));
-    for (std::size_t r = rows.size() - 3; r < rows.size(); ++r)
-      std::printf("  N=%-9ld %-6s %-6s %10.3e particle-steps/s  (%ld steps, %llu rebuilds, %.1f neighbours, %.1f contacts, %.0f B/particle)\n",
-                  rows[r].n, rows[r].law.c_str(), rows[r].precision.c_str(), rows[r].rate, rows[r].steps,
+    const std::size_t first = rows.size();
+    rows.push_back(sphere_case<LinF>("linear", n, warmup, steps));
+    rows.push_back(sphere_case<LinD>("linear", n, warmup, steps));
+    rows.push_back(sphere_case<HzF>("hertz", n, warmup, steps));
+    if (n <= (gpu ? 1000000L : 100000L))
+      for (const char* poly : {"cube", "octahedron", "dodecahedron"}) rows.push_back(polyhedron_case(poly, n, warmup, steps));
+    for (std::size_t r = first; r < rows.size(); ++r)
+      std::printf("  N=%-9ld %-12s %-6s %-6s %10.3e particle-steps/s  (%ld steps, %llu rebuilds, %.1f neighbours, %.2f contacts, %.0f B/particle)\n",
+                  rows[r].n, rows[r].shape.c_str(), rows[r].law.c_str(), rows[r].precision.c_str(), rows[r].rate, rows[r].steps,
                   static_cast<unsigned long long>(rows[r].builds), rows[r].neighbours, rows[r].contacts,
                   rows[r].bytes_per_particle);
     std::fflush(stdout);
@@ -151,17 +176,17 @@ int main(int argc, char** argv) {
   const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + skin_tag() + ".csv";
   std::ofstream csv(file);
   csv << "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,neighbour_builds,"
-         "neighbour_capacity,neighbours_per_particle,contacts_per_particle,bytes_per_particle";
+         "neighbour_capacity,neighbours_per_particle,contacts_per_particle,edge_edge_fraction,bytes_per_particle";
   for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
   csv << '\n';
-  std::printf("\n%-9s %-6s %-6s %11s", "N", "law", "prec", "p-steps/s");
+  std::printf("\n%-9s %-12s %-6s %-6s %11s", "N", "shape", "law", "prec", "p-steps/s");
   for (const char* ph : kPhases) std::printf(" %10.10s", ph);
   std::printf("   (ms/step, phases fenced)\n");
   for (const auto& r : rows) {
-    csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << g_skin_fraction << ',' << r.n << ",sphere," << r.law
+    csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << g_skin_fraction << ',' << r.n << ',' << r.shape << ',' << r.law
         << ',' << r.precision << ',' << r.steps << ',' << r.rate << ',' << r.builds << ',' << r.capacity << ','
-        << r.neighbours << ',' << r.contacts << ',' << r.bytes_per_particle;
-    std::printf("%-9ld %-6s %-6s %11.3e", r.n, r.law.c_str(), r.precision.c_str(), r.rate);
+        << r.neighbours << ',' << r.contacts << ',' << r.edge_fraction << ',' << r.bytes_per_particle;
+    std::printf("%-9ld %-12s %-6s %-6s %11.3e", r.n, r.shape.c_str(), r.law.c_str(), r.precision.c_str(), r.rate);
     for (double ms : r.phase_ms) {
       csv << ',' << ms;
       std::printf(" %10.4f", ms);

@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 #include "blaze/contact/polyhedron.hpp"
+#include "blaze/scenes/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/scenes.hpp"
 
@@ -147,6 +148,39 @@ BOOST_AUTO_TEST_CASE(elastic_head_on_collisions_conserve_energy) {
       BOOST_TEST(thesis.beyond_tolerance > 10 * sat.beyond_tolerance);  // the thesis normal is far worse
     }
   }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// Issue 3, acceptance 6: a gravity packing of 1e5 cubes in a box keeps every particle (none
+// escapes the domain, none goes non-finite) on this binary's backend, with contacts of both kinds.
+BOOST_AUTO_TEST_SUITE(polyhedron_packing_suite)
+
+BOOST_AUTO_TEST_CASE(cube_packing_keeps_every_particle) {
+  using Features = FeatureSet<true, true>;
+  PolyhedronShape<double> shape;
+  shape.table.add(load_shape("data/shapes/cube.shape"), 2500);
+  const double m = shape.table.type[0].mass, k = 1e5, dt = kPi * std::sqrt(0.5 * m / k) / 25;
+  const auto scene = polyhedron_packing(shape.table, 0, static_cast<int>(tol::cube_packing_count), 3, dt);
+  const Law law{LinearSpringDashpot<double>::from_restitution(k, 0.3), HistoryFreeFriction<double>::make(0.4, 0.1)};
+  Simulation<DefaultSpace, PolyhedronShape<double>, Law, VelocityVerlet, ContactPointVelocity, Features> sim(
+      scene.params, one_law(law), scene.world, scene.particles, shape);
+  sim.run(static_cast<std::uint64_t>(tol::cube_packing_steps));
+  const auto [vertex_face, edge_edge] = sim.contact_counts();
+  const auto st = sim.state();
+  bool finite = true, inside = true;
+  for (const auto& x : st.position) {
+    finite = finite && std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z);
+    inside = inside && x.y > 0;  // above the floor
+  }
+  BOOST_TEST_MESSAGE("cube packing: " << st.size() << " cubes, " << vertex_face << " vertex-face and " << edge_edge
+                                      << " edge-edge contacts after " << tol::cube_packing_steps << " steps");
+  BOOST_TEST(sim.removed_count() == 0);
+  BOOST_TEST(st.size() == static_cast<std::size_t>(tol::cube_packing_count));
+  BOOST_TEST(finite);
+  BOOST_TEST(inside);
+  BOOST_TEST(vertex_face > 0);
+  BOOST_TEST(edge_edge > 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

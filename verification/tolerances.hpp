@@ -88,6 +88,11 @@ constexpr long polyhedron_collision_cases = 10000;
 constexpr double polyhedron_collision_outlier_fraction = 0.05;
 constexpr double polyhedron_collision_worst = 0.05;
 
+// Cube packing (issue 3, acceptance 6): the issue's 1e5 cubes; 500 steps of t_c/25 let the loose
+// lattice's random velocities bring every neighbour pair into contact at least once.
+constexpr long cube_packing_count = 100000;
+constexpr long cube_packing_steps = 500;
+
 // --- geometry and bookkeeping ---
 // Closed-form contact geometry in double: a handful of roundings of O(1) numbers.
 constexpr double geometry_double = 1e-12;
