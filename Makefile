@@ -17,7 +17,9 @@ space := $(empty) $(empty)
 CXX := g++
 WARN := -Wall -Wextra -Wshadow -Werror
 CXXFLAGS := -std=c++17 -O2 -fopenmp $(WARN) -Iinclude -I. -isystem /usr/include/eigen3 -DBOOST_TEST_DYN_LINK
-NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-call,all-warnings \
+# EIGEN_NO_CUDA: Eigen is host-only here (shape set-up, references), so it must not mark its
+# functions __host__ __device__ under nvcc.
+NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-call,all-warnings -DEIGEN_NO_CUDA \
              -Xcompiler -fopenmp,$(subst $(space),$(comma),$(WARN)) -Iinclude -I. -isystem /usr/include/eigen3 -DBLAZE_TEST_HEADER_ONLY
 # The GPU machine has Boost headers but not its compiled libraries: CUDA builds use the header-only
 # Boost.Test, and studies plot only where gnuplot-iostream was found at build time.
