@@ -21,5 +21,5 @@ make run NPROC="$n" > "$out/run.log" 2>&1
 echo "make run: rc=$?"
 grep -a "backend\|discharged .* of\|wall time" "$out/run.log"
 cp bench/results/nvidia-*.csv "$out/" 2>/dev/null
-tail -16 "$out/bench.log"
+tail -30 "$out/bench.log"
 grep -a "N=" "$out/bench_skin0.log"
