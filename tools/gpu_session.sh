@@ -12,7 +12,7 @@ n=$(nproc)
 nvidia-smi -L
 make test BACKEND=cuda NPROC="$n" > "$out/test.log" 2>&1
 echo "make test BACKEND=cuda: rc=$?"
-sed 's/\x1b\[[0-9;]*m//g' "$out/test.log" | grep -a "CPU vs GPU\|verification on\|test cases\|assertions\|error" | tail -12
+sed 's/\x1b\[[0-9;]*m//g' "$out/test.log" | grep -a "CPU vs GPU\|verification on\|test cases\|assertions\|error\|cube packing\|tumbling\|normal:\|polyhedron contact" | tail -20
 make bench NPROC="$n" > "$out/bench.log" 2>&1
 echo "make bench: rc=$?"
 build/cuda/blaze_bench --out bench/results --skin 0 --max-n 1000000 > "$out/bench_skin0.log" 2>&1
