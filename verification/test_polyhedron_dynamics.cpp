@@ -65,7 +65,7 @@ CollisionOutcome collide_pairs(const ConvexShape& sa, const ConvexShape& sb, int
     add_polyhedron(s, shape.table, 1, centre + Vec3<double>{0.5 * d0, 0, 0}, qb, 0, {-0.5 * v, 0, 0});
   }
   const double m = std::min(shape.table.type[0].mass, shape.table.type[1].mass), k_n = 1e5;
-  const double t_c = kPi * std::sqrt(0.5 * m / k_n), dt = t_c / (std::getenv("BLAZE_DT_DIV") ? std::atof(std::getenv("BLAZE_DT_DIV")) : 100.0);
+  const double t_c = kPi * std::sqrt(0.5 * m / k_n), dt = t_c / tol::polyhedron_collision_steps_per_contact;
   const Law law{LinearSpringDashpot<double>::from_restitution(k_n, 1.0), HistoryFreeFriction<double>::make(0, 0)};
   const double extent = side * spacing + spacing;
   SimulationParams<double> prm{dt, {0, 0, 0}, {-extent, -spacing, -spacing}, {extent, extent, extent},
@@ -73,8 +73,8 @@ CollisionOutcome collide_pairs(const ConvexShape& sa, const ConvexShape& sb, int
   Simulation<DefaultSpace, PolyhedronShape<double, NormalChoice>, Law, VelocityVerlet> sim(prm, one_law(law), World<double>{}, s, shape);
   std::vector<double> before(n);
   for (int k = 0; k < n; ++k) before[k] = kinetic(s, 2 * k) + kinetic(s, 2 * k + 1);
-  // Long enough for the approach, any contact (a few t_c with rotation) and separation.
-  sim.run(static_cast<std::uint64_t>((2e-4 / v + 20 * t_c) / dt));
+  // Long enough for the approach, the contact (a few t_c with rotation) and separation.
+  sim.run(static_cast<std::uint64_t>((2e-4 / v + 5 * t_c) / dt));
   const auto st = sim.state();
   std::vector<Index> at(st.size());
   for (std::size_t i = 0; i < st.size(); ++i) at[st.id[i]] = static_cast<Index>(i);
@@ -127,11 +127,11 @@ BOOST_AUTO_TEST_CASE(torque_free_tumbling_box_conserves_momentum_and_energy) {
   BOOST_TEST(worst_e <= tol::tumbling_energy);
 }
 
-// Issue 3 asks for every case within 0.5%. Measured (2026-11-22, 5000 + 5000 cases): the
-// separating-axis normal keeps 97% of cases within 0.5% (worst 3%), the thesis normal 35-43%
-// (worst +555%, 2700 cases gaining energy). The remaining errors come where the least-penetration
-// axis or the deepest vertex changes during contact (the lever arm jumps); until that is solved
-// (issue 3 stays open), this asserts the measured level as a regression bound.
+// The contact force is the gradient of k delta^2 / 2 with delta the least penetration, so it is
+// conservative; where the least-penetration feature changes, the lever arm jumps and the
+// integrator errs at first order in dt: measured worst |dKE|/KE 3% at dt = t_c/100, 0.74% at
+// t_c/400, 0.32% at t_c/1600 (tolerances.hpp). The thesis's normal choice gains energy whatever
+// the step.
 BOOST_AUTO_TEST_CASE(elastic_head_on_collisions_conserve_energy) {
   const ConvexShape cube = load_shape("data/shapes/cube.shape"), octa = load_shape("data/shapes/octahedron.shape");
   const int n = static_cast<int>(tol::polyhedron_collision_cases / 2);
@@ -143,9 +143,9 @@ BOOST_AUTO_TEST_CASE(elastic_head_on_collisions_conserve_energy) {
                             << thesis.beyond_tolerance << " off by > 0.5% (" << thesis.gained << " gained), worst " << thesis.worst);
     BOOST_TEST_CONTEXT(name) {
       BOOST_TEST(sat.measured >= sat.pairs * 95 / 100);  // nearly all have separated
-      BOOST_TEST(sat.beyond_tolerance <= tol::polyhedron_collision_outlier_fraction * sat.measured);
-      BOOST_TEST(sat.worst <= tol::polyhedron_collision_worst);
-      BOOST_TEST(thesis.beyond_tolerance > 10 * sat.beyond_tolerance);  // the thesis normal is far worse
+      BOOST_TEST(sat.beyond_tolerance == 0);
+      BOOST_TEST(sat.gained == 0);
+      BOOST_TEST(thesis.gained > sat.pairs / 20);  // the thesis normal's flips gain energy (measured 9% and 31%)
     }
   }
 }

@@ -9,7 +9,8 @@
 // Any positive separation: no contact (thesis Theorem 1, the separating plane). Otherwise the
 // contact normal is the axis of least penetration and the overlap is that penetration (the
 // minimum translation that separates them), so the normal is continuous while bodies separate.
-// Faces are preferred to edges unless an edge axis is shallower by more than 1e-5 of the sizes.
+// Ties go to faces (checked first). No preference margin: the overlap is then a continuous
+// function of the configuration, and k delta^2 / 2 a potential (see incident_point).
 // Contact point: for a face axis, the deepest vertex of the incident body (the lever arm that
 // keeps the force conservative: the overlap is its penetration), spread over the vertices within
 // 10% of that depth so flat face-face contacts push through their centre (incident_point). For an
@@ -123,7 +124,6 @@ struct PolyhedronShape {
       if (s > best) best = s, kind = 1, index = f;
     }
     // Edge pairs that are faces of the Minkowski difference.
-    const Real bias = Real(1e-5) * reach;
     Real edge_best = -reach;
     int edge_a = -1, edge_b = -1;
     Vec3<Real> edge_axis{0, 0, 0};
@@ -145,7 +145,7 @@ struct PolyhedronShape {
         if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
       }
     }
-    if (edge_a >= 0 && edge_best > best + bias) best = edge_best, kind = 2;
+    if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;
 
     Vec3<Real> n{0, 0, 0}, point{0, 0, 0};
     Real overlap = -best;
@@ -280,7 +280,7 @@ struct PolyhedronShape {
                                             int count) {
     Real deepest = offset[f] - dot(normal[f], v[0]);
     for (int k = 1; k < count; ++k) deepest = max_r(deepest, offset[f] - dot(normal[f], v[k]));
-    const Real floor = deepest - (Real(0.1) * abs_r(deepest) + Real(1e-12) * abs_r(offset[f]));
+    const Real floor = deepest - (Real(0.01) * abs_r(deepest) + Real(1e-12) * abs_r(offset[f]));
     Vec3<Real> sum{0, 0, 0};
     Real weight = 0;
     for (int k = 0; k < count; ++k) {
