@@ -114,3 +114,69 @@ BOOST_AUTO_TEST_CASE(agrees_with_brute_force_separating_axes) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Sphere against each shipped polyhedron: a sphere placed outside a face, an edge and a vertex
+// (along the outward direction of that feature's normal cone) and with its centre inside the
+// body, at a known overlap; overlap, normal and contact side must follow (closed forms in the
+// body frame). Also sphere-sphere through the same mixed policy.
+BOOST_AUTO_TEST_SUITE(sphere_polyhedron_contact)
+
+BOOST_AUTO_TEST_CASE(face_edge_vertex_and_inside_cases) {
+  const double r = 0.002, delta = 1e-4;
+  for (const char* f : kShapes) {
+    const ConvexShape s = load_shape(std::string("data/shapes/") + f + ".shape");
+    PolyhedronShape<double> shape;
+    shape.table.add(s, 1000);
+    shape.table.add_sphere(r, 1000);
+    const std::mt19937_64::result_type seed = 11;
+    std::mt19937_64 rng(seed);
+    const Eigen::Quaterniond q = random_rotation(rng);
+    const Eigen::Matrix3d rot = q.toRotationMatrix();
+    const Eigen::Vector3d x(0.01, -0.02, 0.03);
+    const PolyhedronShape<double>::Body poly{{x.x(), x.y(), x.z()}, {q.w(), q.x(), q.y(), q.z()}, 0, 0};
+    // (surface point, outward direction, gap of the sphere centre from the surface) in the body frame.
+    struct Case { const char* feature; Eigen::Vector3d point, dir; double gap; };
+    const auto& e = s.edges[0];
+    const Eigen::Vector3d edge_mid = 0.5 * (s.vertices[e.v0] + s.vertices[e.v1]);
+    const Eigen::Vector3d edge_dir = (s.normals[e.left] + s.normals[e.right]).normalized();
+    Eigen::Vector3d vertex_dir = Eigen::Vector3d::Zero();  // inside the vertex's normal cone
+    for (std::size_t g = 0; g < s.faces.size(); ++g)
+      for (int v : s.faces[g]) if (v == 0) vertex_dir += s.normals[g];
+    vertex_dir.normalize();
+    const Case cases[] = {{"face", s.centroids[0], s.normals[0], r - delta},
+                          {"edge", edge_mid, edge_dir, r - delta},
+                          {"vertex", s.vertices[0], vertex_dir, r - delta},
+                          {"centre inside", s.centroids[0], s.normals[0], -0.2 * r}};
+    for (const auto& c : cases) {
+      const Eigen::Vector3d centre = x + rot * (c.point + c.gap * c.dir), normal = rot * c.dir;
+      const PolyhedronShape<double>::Body ball{{centre.x(), centre.y(), centre.z()}, Quat<double>::identity(), 1, 1};
+      for (int order = 0; order < 2; ++order) {
+        const auto g = order == 0 ? shape.collide(poly, ball) : shape.collide(ball, poly);
+        const double sign = order == 0 ? 1 : -1;  // normals point from the first body to the second
+        BOOST_TEST_CONTEXT(f << ", " << c.feature << (order ? ", sphere first" : "")) {
+          BOOST_TEST_REQUIRE(g.touching);
+          BOOST_TEST(g.overlap == r - c.gap, boost::test_tools::tolerance(tol::geometry_double));
+          const double cosine = sign * (g.normal.x * normal.x() + g.normal.y * normal.y() + g.normal.z * normal.z());
+          BOOST_TEST(cosine == 1.0, boost::test_tools::tolerance(tol::geometry_double));
+        }
+      }
+      // Moved out of reach along the same direction: no contact.
+      const Eigen::Vector3d away = x + rot * (c.point + (r + delta) * c.dir);
+      const PolyhedronShape<double>::Body far{{away.x(), away.y(), away.z()}, Quat<double>::identity(), 1, 1};
+      if (c.gap > 0) BOOST_TEST(!shape.collide(poly, far).touching);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(spheres_in_the_mixed_policy_collide_as_spheres) {
+  PolyhedronShape<double> shape;
+  shape.table.add_sphere(0.002, 1000);
+  shape.table.add_sphere(0.003, 1000);
+  const PolyhedronShape<double>::Body a{{0, 0, 0}, Quat<double>::identity(), 0, 0}, b{{0.0049, 0, 0}, Quat<double>::identity(), 1, 1};
+  const auto g = shape.collide(a, b);
+  BOOST_TEST(g.touching);
+  BOOST_TEST(g.overlap == 1e-4, boost::test_tools::tolerance(tol::geometry_double));
+  BOOST_TEST(g.normal.x == 1.0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

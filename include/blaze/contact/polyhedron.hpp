@@ -23,6 +23,11 @@
 // average to nearly zero; we take (PC - x_A) + (x_B - PC), i.e. the centre line). Its Fig 5.2
 // shows that choice flipping while bodies separate. It is kept as the named option ThesisNormal.
 //
+// Polyhedron-sphere (a table type with no features is a sphere): the sphere's centre against the
+// faces (foot points inside the body) and edges of the polyhedron: the nearest surface point p
+// gives normal (c - p)/|c - p| and overlap r - |c - p|; a centre inside the body uses the face of
+// largest separation. Sphere-sphere as in sphere.hpp.
+//
 // Polyhedron-world (Algorithm 2): the centre must be on the wall's side and within bound_R of
 // the plane (lines 1-2); penetrating vertices whose foot lies inside the polygon are the contact;
 // point = their mean, overlap = the deepest. Cylinder (drum): vertices beyond the radius.
@@ -32,6 +37,7 @@
 // so |L| is conserved exactly in torque-free motion and the energy to second order.
 #pragma once
 #include "blaze/contact/contact_geometry.hpp"
+#include "blaze/contact/sphere.hpp"
 #include "blaze/core/mat3.hpp"
 #include "blaze/particles/particle_store.hpp"
 #include "blaze/shapes/polyhedron_table.hpp"
@@ -88,7 +94,70 @@ struct PolyhedronShape {
     return {p.position.get(i), p.orientation.get(i), p.type[i], i};
   }
 
+  BLAZE_HD bool is_sphere(const Body& b) const { return table.type[b.type].vertex_count == 0; }
+
   BLAZE_HD ContactGeometry<Real> collide(const Body& a, const Body& b) const {
+    if (is_sphere(a) || is_sphere(b)) {
+      if (is_sphere(a) && is_sphere(b))
+        return SphereShape{}.collide(SphereShape::Body<Real>{a.x, table.type[a.type].bounding_radius, a.index},
+                                     SphereShape::Body<Real>{b.x, table.type[b.type].bounding_radius, b.index});
+      if (is_sphere(b)) return polyhedron_sphere(a, b.x, table.type[b.type].bounding_radius);
+      ContactGeometry<Real> g = polyhedron_sphere(b, a.x, table.type[a.type].bounding_radius);
+      g.normal = -g.normal;
+      return g;
+    }
+    return polyhedron_polyhedron(a, b);
+  }
+
+  // Normal from the polyhedron towards the sphere of centre c, radius r.
+  BLAZE_HD ContactGeometry<Real> polyhedron_sphere(const Body& a, const Vec3<Real>& c, Real r) const {
+    using namespace polyhedron_detail;
+    const PolyhedronData<Real>& A = table.type[a.type];
+    const Vec3<Real> d = c - a.x;
+    const Real reach = A.bounding_radius + r;
+    if (!(norm2(d) < reach * reach)) return ContactGeometry<Real>::none();
+    const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
+    const Vec3<Real> cl = ra.transpose_times(d);
+    const Real tol = Real(1e-9) * reach;
+    int f_max = 0;
+    Real s_max = dot(A.normal[0], cl) - A.offset[0];
+    for (int f = 1; f < A.face_count; ++f) {
+      const Real s = dot(A.normal[f], cl) - A.offset[f];
+      if (s > s_max) s_max = s, f_max = f;
+    }
+    Vec3<Real> n;
+    Real gap;  // signed distance from the surface to the centre
+    if (s_max <= Real(0)) {
+      n = A.normal[f_max];
+      gap = s_max;
+    } else {
+      if (s_max >= r) return ContactGeometry<Real>::none();
+      Real best = reach;
+      Vec3<Real> nearest{0, 0, 0};
+      for (int f = 0; f < A.face_count; ++f) {
+        const Real s = dot(A.normal[f], cl) - A.offset[f];
+        if (!(s > Real(0)) || s >= best) continue;
+        const Vec3<Real> foot = cl - s * A.normal[f];
+        bool inside = true;
+        for (int g = 0; g < A.face_count && inside; ++g) inside = dot(A.normal[g], foot) - A.offset[g] <= tol;
+        if (inside) best = s, nearest = foot;
+      }
+      for (int e = 0; e < A.edge_count; ++e) {
+        const Vec3<Real> p0 = A.vertex[A.edge_vertex[e][0]], u = A.vertex[A.edge_vertex[e][1]] - p0;
+        const Vec3<Real> q = p0 + clamp_r(dot(cl - p0, u) / norm2(u), Real(0), Real(1)) * u;
+        const Real dist = norm(cl - q);
+        if (dist < best) best = dist, nearest = q;
+      }
+      if (!(best < r) || best == Real(0)) return ContactGeometry<Real>::none();
+      n = (cl - nearest) * (Real(1) / best);
+      gap = best;
+    }
+    const Real overlap = r - gap;
+    const Vec3<Real> point = cl - n * (Real(0.5) * (r + gap));  // middle of the overlap
+    return {true, ra * n, overlap, a.x + ra * point, r * A.bounding_radius / reach, ContactKind::vertex_face};
+  }
+
+  BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = table.type[a.type];
     const PolyhedronData<Real>& B = table.type[b.type];
@@ -204,6 +273,7 @@ struct PolyhedronShape {
 
   BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const PlanarPolygon<Real>& w) const {
     const PolyhedronData<Real>& A = table.type[a.type];
+    if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, w);
     const Real d_com = dot(a.x - w.centroid, w.normal);
     if (!(d_com > Real(0) && d_com < A.bounding_radius)) return ContactGeometry<Real>::none();
     const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
@@ -225,6 +295,7 @@ struct PolyhedronShape {
 
   BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const Cylinder<Real>& c) const {
     const PolyhedronData<Real>& A = table.type[a.type];
+    if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, c);
     const Vec3<Real> rel = a.x - c.origin;
     const Vec3<Real> rho = rel - dot(rel, c.axis) * c.axis;
     if (!(norm(rho) + A.bounding_radius > c.radius)) return ContactGeometry<Real>::none();

@@ -18,7 +18,7 @@ struct PolyhedronData {
   Real offset[kMaxFaces];           // m: a point x is inside face f's half-space when normal.x <= offset
   std::uint8_t edge_vertex[kMaxEdges][2];
   std::uint8_t edge_face[kMaxEdges][2];  // faces left and right of the edge (ConvexShape::Edge)
-  int vertex_count, face_count, edge_count;
+  int vertex_count, face_count, edge_count;  // all 0: a sphere of radius bounding_radius
   Real bounding_radius;    // m (bound_R)
   Real volume;             // m^3
   Real mass;               // kg, at this type's density
@@ -60,6 +60,22 @@ struct PolyhedronTable {
   static constexpr int kMaxTypes = 4;
   PolyhedronData<Real> type[kMaxTypes];
   int count = 0;
+
+  // A sphere type (no features): polyhedra and spheres can share one simulation.
+  int add_sphere(double radius, double density) {
+    if (count == kMaxTypes)
+      throw std::invalid_argument("polyhedron table: more than " + std::to_string(kMaxTypes) + " particle types");
+    if (!(radius > 0) || !(density > 0)) throw std::invalid_argument("sphere type: radius and density must be > 0");
+    PolyhedronData<Real> d{};
+    const double volume = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius, mass = density * volume;
+    const Real inv = static_cast<Real>(1 / (0.4 * mass * radius * radius));
+    d.bounding_radius = static_cast<Real>(radius);
+    d.volume = static_cast<Real>(volume);
+    d.mass = static_cast<Real>(mass);
+    d.inv_inertia = {inv, inv, inv};
+    type[count] = d;
+    return count++;
+  }
 
   int add(const ConvexShape& s, double density) {
     if (count == kMaxTypes)
