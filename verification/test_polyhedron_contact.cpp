@@ -180,3 +180,55 @@ BOOST_AUTO_TEST_CASE(spheres_in_the_mixed_policy_collide_as_spheres) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Polyhedron against world objects (thesis Algorithm 2): a cube face-down on a floor polygon,
+// tilted onto one vertex, beside the polygon's edge, and in a drum.
+BOOST_AUTO_TEST_SUITE(polyhedron_world_contact)
+
+BOOST_AUTO_TEST_CASE(cube_on_floor_and_in_drum) {
+  const ConvexShape cube = load_shape("data/shapes/cube.shape");
+  PolyhedronShape<double> shape;
+  shape.table.add(cube, 2500);
+  const double half = 0.005, delta = 1e-4;
+  // The body frame of a cube may be any rotation of the input (isotropic inertia): orient it so
+  // that body face 0 points down.
+  const Eigen::Vector3d n0 = cube.normals[0];
+  const Eigen::Quaterniond face_down = Eigen::Quaterniond::FromTwoVectors(n0, -Eigen::Vector3d::UnitY());
+  const Quat<double> q{face_down.w(), face_down.x(), face_down.y(), face_down.z()};
+  const auto floor = PlanarPolygon<double>::make({{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}, 0);
+  const PolyhedronShape<double>::Body flat{{0.1, half - delta, -0.2}, q, 0, 0};
+  const auto g = shape.collide_world(flat, floor);
+  BOOST_TEST_REQUIRE(g.touching);
+  BOOST_TEST(g.overlap == delta, boost::test_tools::tolerance(tol::geometry_double));
+  BOOST_TEST(g.normal.y == -1.0);
+  // Contact point: the mean of the four penetrating vertices, under the centre.
+  BOOST_TEST(g.point.x == 0.1, boost::test_tools::tolerance(tol::geometry_double));
+  BOOST_TEST(g.point.z == -0.2, boost::test_tools::tolerance(tol::geometry_double));
+  // Lifted clear of the floor, or centre below it (line 1 of Algorithm 2): no contact.
+  BOOST_TEST(!shape.collide_world(PolyhedronShape<double>::Body{{0.1, half + delta, -0.2}, q, 0, 0}, floor).touching);
+  BOOST_TEST(!shape.collide_world(PolyhedronShape<double>::Body{{0.1, -0.001, -0.2}, q, 0, 0}, floor).touching);
+  // Standing on a vertex: overlap of that vertex alone, point at the vertex.
+  const Eigen::Vector3d v0 = cube.vertices[0];
+  const Eigen::Quaterniond on_vertex = Eigen::Quaterniond::FromTwoVectors(v0, -Eigen::Vector3d::UnitY());
+  const double reach = v0.norm();
+  const PolyhedronShape<double>::Body tip{{0, reach - delta, 0}, {on_vertex.w(), on_vertex.x(), on_vertex.y(), on_vertex.z()}, 0, 0};
+  const auto gv = shape.collide_world(tip, floor);
+  BOOST_TEST_REQUIRE(gv.touching);
+  BOOST_TEST(gv.overlap == delta, boost::test_tools::tolerance(tol::geometry_double));
+  BOOST_TEST(std::fabs(gv.point.x) <= tol::geometry_double * reach);
+  // Beyond the polygon's edge the containment test rejects the vertices.
+  const auto small = PlanarPolygon<double>::make({{-0.001, 0, 0.001}, {0.001, 0, 0.001}, {0.001, 0, -0.001}, {-0.001, 0, -0.001}}, 0);
+  BOOST_TEST(!shape.collide_world(PolyhedronShape<double>::Body{{0.02, half - delta, 0}, q, 0, 0}, small).touching);
+  // In a drum of radius R along z, face-down at the bottom.
+  const double drum = 0.1;
+  const auto cyl = Cylinder<double>::make({0, 0, -0.05}, {0, 0, 1}, drum, 0.1, 0);
+  const PolyhedronShape<double>::Body in_drum{{0, -(drum - half) - delta, 0}, q, 0, 0};
+  const auto gc = shape.collide_world(in_drum, cyl);
+  BOOST_TEST_REQUIRE(gc.touching);
+  // The corners reach furthest out: sqrt((R - half + delta)^2... exactly: corner radius minus R.
+  const double corner = std::hypot(drum - half + delta + half, half) - drum;
+  BOOST_TEST(gc.overlap == corner, boost::test_tools::tolerance(tol::geometry_double));
+  BOOST_TEST(gc.normal.y == -1.0, boost::test_tools::tolerance(tol::geometry_double));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
