@@ -81,7 +81,14 @@ BLAZE_HD inline Vec3<Real> segment_midpoint(const Vec3<Real>& p0, const Vec3<Rea
 template <class Real, class NormalChoice = SeparatingAxisNormal>
 struct PolyhedronShape {
   static constexpr const char* name = "polyhedron";
+  // The shape table travels by value in every kernel's arguments (CUDA's constant bank). A copy
+  // in device memory can be named instead, to measure the two placements (bench/).
   PolyhedronTable<Real> table;
+  const PolyhedronTable<Real>* table_in_memory = nullptr;
+
+  BLAZE_HD const PolyhedronData<Real>& data(int type) const {
+    return table_in_memory ? table_in_memory->type[type] : table.type[type];
+  }
 
   struct Body {
     Vec3<Real> x;
@@ -94,15 +101,15 @@ struct PolyhedronShape {
     return {p.position.get(i), p.orientation.get(i), p.type[i], i};
   }
 
-  BLAZE_HD bool is_sphere(const Body& b) const { return table.type[b.type].vertex_count == 0; }
+  BLAZE_HD bool is_sphere(const Body& b) const { return data(b.type).vertex_count == 0; }
 
   BLAZE_HD ContactGeometry<Real> collide(const Body& a, const Body& b) const {
     if (is_sphere(a) || is_sphere(b)) {
       if (is_sphere(a) && is_sphere(b))
-        return SphereShape{}.collide(SphereShape::Body<Real>{a.x, table.type[a.type].bounding_radius, a.index},
-                                     SphereShape::Body<Real>{b.x, table.type[b.type].bounding_radius, b.index});
-      if (is_sphere(b)) return polyhedron_sphere(a, b.x, table.type[b.type].bounding_radius);
-      ContactGeometry<Real> g = polyhedron_sphere(b, a.x, table.type[a.type].bounding_radius);
+        return SphereShape{}.collide(SphereShape::Body<Real>{a.x, data(a.type).bounding_radius, a.index},
+                                     SphereShape::Body<Real>{b.x, data(b.type).bounding_radius, b.index});
+      if (is_sphere(b)) return polyhedron_sphere(a, b.x, data(b.type).bounding_radius);
+      ContactGeometry<Real> g = polyhedron_sphere(b, a.x, data(a.type).bounding_radius);
       g.normal = -g.normal;
       return g;
     }
@@ -112,7 +119,7 @@ struct PolyhedronShape {
   // Normal from the polyhedron towards the sphere of centre c, radius r.
   BLAZE_HD ContactGeometry<Real> polyhedron_sphere(const Body& a, const Vec3<Real>& c, Real r) const {
     using namespace polyhedron_detail;
-    const PolyhedronData<Real>& A = table.type[a.type];
+    const PolyhedronData<Real>& A = data(a.type);
     const Vec3<Real> d = c - a.x;
     const Real reach = A.bounding_radius + r;
     if (!(norm2(d) < reach * reach)) return ContactGeometry<Real>::none();
@@ -159,8 +166,8 @@ struct PolyhedronShape {
 
   BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
-    const PolyhedronData<Real>& A = table.type[a.type];
-    const PolyhedronData<Real>& B = table.type[b.type];
+    const PolyhedronData<Real>& A = data(a.type);
+    const PolyhedronData<Real>& B = data(b.type);
     const Vec3<Real> d = b.x - a.x;
     const Real reach = A.bounding_radius + B.bounding_radius;
     if (!(norm2(d) < reach * reach)) return ContactGeometry<Real>::none();
@@ -272,7 +279,7 @@ struct PolyhedronShape {
   }
 
   BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const PlanarPolygon<Real>& w) const {
-    const PolyhedronData<Real>& A = table.type[a.type];
+    const PolyhedronData<Real>& A = data(a.type);
     if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, w);
     const Real d_com = dot(a.x - w.centroid, w.normal);
     if (!(d_com > Real(0) && d_com < A.bounding_radius)) return ContactGeometry<Real>::none();
@@ -294,7 +301,7 @@ struct PolyhedronShape {
   }
 
   BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const Cylinder<Real>& c) const {
-    const PolyhedronData<Real>& A = table.type[a.type];
+    const PolyhedronData<Real>& A = data(a.type);
     if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, c);
     const Vec3<Real> rel = a.x - c.origin;
     const Vec3<Real> rho = rel - dot(rel, c.axis) * c.axis;
@@ -363,12 +370,12 @@ struct PolyhedronShape {
 
   // R diag(I^-1) R^T v and R diag(I) R^T v.
   BLAZE_HD Vec3<Real> inverse_inertia_times(int type, const Mat3<Real>& r, const Vec3<Real>& v) const {
-    const Vec3<Real> inv = table.type[type].inv_inertia;
+    const Vec3<Real> inv = data(type).inv_inertia;
     const Vec3<Real> b = r.transpose_times(v);
     return r * Vec3<Real>{b.x * inv.x, b.y * inv.y, b.z * inv.z};
   }
   BLAZE_HD Vec3<Real> inertia_times(int type, const Mat3<Real>& r, const Vec3<Real>& v) const {
-    const Vec3<Real> inv = table.type[type].inv_inertia;
+    const Vec3<Real> inv = data(type).inv_inertia;
     const Vec3<Real> b = r.transpose_times(v);
     return r * Vec3<Real>{b.x / inv.x, b.y / inv.y, b.z / inv.z};
   }
