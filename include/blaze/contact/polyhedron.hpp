@@ -226,7 +226,6 @@ struct PolyhedronShape {
     Vec3<Real> n{0, 0, 0}, point{0, 0, 0};
     Real overlap = -best;
     ContactKind contact_kind = ContactKind::vertex_face;
-    const Real tol = Real(1e-6) * reach;
     if (kind == 2) {
       n = edge_axis;
       contact_kind = ContactKind::edge_edge;
@@ -241,6 +240,7 @@ struct PolyhedronShape {
     }
     if constexpr (std::is_same_v<NormalChoice, ThesisNormal>) {
       // Type 1: contained vertices of either body; the deepest one's nearest face gives the normal.
+      const Real tol = Real(1e-6) * reach;
       int inside = 0;
       Real deepest = -1;
       Vec3<Real> sum{0, 0, 0}, thesis_normal{0, 0, 0};
@@ -283,21 +283,14 @@ struct PolyhedronShape {
     if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, w);
     const Real d_com = dot(a.x - w.centroid, w.normal);
     if (!(d_com > Real(0) && d_com < A.bounding_radius)) return ContactGeometry<Real>::none();
-    const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
-    Vec3<Real> sum{0, 0, 0};
-    Real deepest = 0;
-    int count = 0;
-    for (int k = 0; k < A.vertex_count; ++k) {
-      const Vec3<Real> v = a.x + ra * A.vertex[k];
+    Vec3<Real> mean;
+    Real deepest;
+    const auto below_inside = [&](const Vec3<Real>& v) {
       const Real dk = dot(v - w.centroid, w.normal);
-      if (!(dk < Real(0)) || !w.contains(v - dk * w.normal)) continue;
-      sum += v;
-      deepest = max_r(deepest, -dk);
-      ++count;
-    }
-    if (count == 0) return ContactGeometry<Real>::none();
-    return {true, -w.normal, deepest, sum * (Real(1) / static_cast<Real>(count)), A.bounding_radius,
-            ContactKind::vertex_face};
+      return dk < Real(0) && w.contains(v - dk * w.normal) ? -dk : Real(0);
+    };
+    if (!penetrating_vertices(a, A, below_inside, mean, deepest)) return ContactGeometry<Real>::none();
+    return {true, -w.normal, deepest, mean, A.bounding_radius, ContactKind::vertex_face};
   }
 
   BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const Cylinder<Real>& c) const {
@@ -306,23 +299,14 @@ struct PolyhedronShape {
     const Vec3<Real> rel = a.x - c.origin;
     const Vec3<Real> rho = rel - dot(rel, c.axis) * c.axis;
     if (!(norm(rho) + A.bounding_radius > c.radius)) return ContactGeometry<Real>::none();
-    const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
-    Vec3<Real> sum{0, 0, 0};
-    Real deepest = 0;
-    int count = 0;
-    for (int k = 0; k < A.vertex_count; ++k) {
-      const Vec3<Real> v = a.x + ra * A.vertex[k];
+    Vec3<Real> mean;
+    Real deepest;
+    const auto beyond_radius = [&](const Vec3<Real>& v) {
       const Vec3<Real> vr = v - c.origin;
       const Real s = dot(vr, c.axis);
-      if (!(s >= Real(0) && s <= c.length)) continue;
-      const Real pen = norm(vr - s * c.axis) - c.radius;
-      if (!(pen > Real(0))) continue;
-      sum += v;
-      deepest = max_r(deepest, pen);
-      ++count;
-    }
-    if (count == 0) return ContactGeometry<Real>::none();
-    const Vec3<Real> mean = sum * (Real(1) / static_cast<Real>(count));
+      return s >= Real(0) && s <= c.length ? norm(vr - s * c.axis) - c.radius : Real(0);
+    };
+    if (!penetrating_vertices(a, A, beyond_radius, mean, deepest)) return ContactGeometry<Real>::none();
     const Vec3<Real> mr = mean - c.origin;
     Vec3<Real> n = mr - dot(mr, c.axis) * c.axis;
     n *= Real(1) / norm(n);
@@ -348,6 +332,28 @@ struct PolyhedronShape {
   }
 
  private:
+  // Thesis Algorithm 2 for any world object: the vertices with a positive penetration(v) (m) are
+  // the contact; `mean` is their mean (the contact point), `deepest` the largest penetration.
+  template <class Penetration>
+  BLAZE_HD static bool penetrating_vertices(const Body& a, const PolyhedronData<Real>& A, const Penetration& penetration,
+                                            Vec3<Real>& mean, Real& deepest) {
+    const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
+    Vec3<Real> sum{0, 0, 0};
+    deepest = 0;
+    int count = 0;
+    for (int k = 0; k < A.vertex_count; ++k) {
+      const Vec3<Real> v = a.x + ra * A.vertex[k];
+      const Real pen = penetration(v);
+      if (!(pen > Real(0))) continue;
+      sum += v;
+      deepest = max_r(deepest, pen);
+      ++count;
+    }
+    if (count == 0) return false;
+    mean = sum * (Real(1) / static_cast<Real>(count));
+    return true;
+  }
+
   // Contact point for a face axis of the reference body (planes `normal`/`offset`, face `f`): the
   // incident body's vertices that penetrate the face plane to within 10% of the deepest,
   // weighted by how far they reach into that band. The overlap is the deepest vertex's
