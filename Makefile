@@ -3,9 +3,13 @@
 #   make test              CPU verification suite (+ compile-only check of the CUDA build)
 #   make test BACKEND=cuda verification suite on the GPU
 #   make bench             particle-steps/s and per-phase times (GPU if present)
+#   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
+#   make figures           all of them; make verification-readme renders verification/README.md
 # Both install missing Debian packages first (tools/ensure_deps.sh).
+# BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
 BACKEND ?= cpu
+BUILD ?= build
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 NVCC ?= $(shell command -v nvcc 2>/dev/null || ls /usr/local/cuda/bin/nvcc 2>/dev/null)
 HAVE_GPU := $(shell nvidia-smi -L >/dev/null 2>&1 && echo yes)
@@ -23,15 +27,15 @@ NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-cal
              -Xcompiler -fopenmp,$(subst $(space),$(comma),$(WARN)) -Iinclude -I. -isystem /usr/include/eigen3 -DBLAZE_TEST_HEADER_ONLY
 # The GPU machine has Boost headers but not its compiled libraries: CUDA builds use the header-only
 # Boost.Test, and studies plot only where gnuplot-iostream was found at build time.
-TEST_LIBS_cpu := -lboost_unit_test_framework
-TEST_LIBS_cuda :=
+TEST_LIBS_cpu := -lboost_unit_test_framework -lgsl -lgslcblas
+TEST_LIBS_cuda := -lgsl -lgslcblas
 PLOT_LIBS := $(if $(wildcard /usr/include/gnuplot-iostream.h),-lboost_iostreams -lboost_filesystem -lboost_system)
 
 HEADERS := $(shell find include kernels verification studies bench -name '*.hpp')
-TEST_SRC := $(wildcard verification/*.cpp)
+TEST_SRC ?= $(wildcard verification/*.cpp)
 STUDIES := $(notdir $(wildcard studies/*))
 
-.PHONY: deps test run bench clean build-cpu build-cuda check-cuda figures
+.PHONY: deps test run bench clean build-cpu build-cuda check-cuda figures verification-readme
 .DEFAULT_GOAL := run
 .SECONDARY:
 
@@ -39,29 +43,29 @@ deps:
 	@tools/ensure_deps.sh
 
 # ---- objects: build/<backend>/<path>.o --------------------------------------------------------
-build/cpu/%.o: %.cpp $(HEADERS)
+$(BUILD)/cpu/%.o: %.cpp $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
-build/cuda/%.o: %.cpp $(HEADERS)
+$(BUILD)/cuda/%.o: %.cpp $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(NVCC) $(NVCCFLAGS) -x cu -c $< -o $@
 
-build/cpu/blaze_tests: $(TEST_SRC:%.cpp=build/cpu/%.o)
+$(BUILD)/cpu/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cpu/%.o)
 	$(CXX) -fopenmp $^ -o $@ $(TEST_LIBS_cpu)
-build/cuda/blaze_tests: $(TEST_SRC:%.cpp=build/cuda/%.o)
+$(BUILD)/cuda/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cuda/%.o)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(TEST_LIBS_cuda)
 
-build/cpu/study_%: build/cpu/studies/%/main.o
+$(BUILD)/cpu/study_%: $(BUILD)/cpu/studies/%/main.o
 	$(CXX) -fopenmp $^ -o $@ $(PLOT_LIBS)
-build/cuda/study_%: build/cuda/studies/%/main.o
+$(BUILD)/cuda/study_%: $(BUILD)/cuda/studies/%/main.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(PLOT_LIBS)
-build/cpu/blaze_bench: build/cpu/bench/bench.o
+$(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 	$(CXX) -fopenmp $^ -o $@
-build/cuda/blaze_bench: build/cuda/bench/bench.o
+$(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-build-cpu: build/cpu/blaze_tests $(STUDIES:%=build/cpu/study_%) build/cpu/blaze_bench
-build-cuda: build/cuda/blaze_tests $(STUDIES:%=build/cuda/study_%) build/cuda/blaze_bench
+build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench
+build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD)/cuda/blaze_bench
 
 # Compile (not run) the CUDA build so GPU code cannot rot unseen.
 check-cuda:
@@ -72,27 +76,52 @@ else
 	@echo "CUDA build compiled for $(CUDA_ARCH) with $(NVCC)"
 endif
 
+# Each run writes the suite's table rows to $(BUILD)/<backend>/verification.tsv (report.hpp).
+# TESTS=suite[/case][:...] runs a subset (Boost.Test --run_test syntax).
+RUN_TESTS = rm -f $(BUILD)/$(1)/verification.tsv; BLAZE_REPORT=$(BUILD)/$(1)/verification.tsv \
+  $(BUILD)/$(1)/blaze_tests --log_level=message --report_level=short --color_output=no $(if $(TESTS),--run_test=$(TESTS))
 ifeq ($(BACKEND),cuda)
 test: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) build/cuda/blaze_tests
-	OMP_NUM_THREADS=$(NPROC) build/cuda/blaze_tests --log_level=message --report_level=short --color_output=no
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests
+	OMP_NUM_THREADS=$(NPROC) $(call RUN_TESTS,cuda)
 else
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) build-cpu
 	@$(MAKE) --no-print-directory check-cuda
-	build/cpu/blaze_tests --log_level=message --report_level=short --color_output=no
+	$(call RUN_TESTS,cpu)
 endif
+
+# ---- thesis figures: plots/fig-X.gp names its verification cases on a "# test:" line ----------
+FIGURE_DIR := data/verification
+FIGURES := $(patsubst plots/%.gp,%,$(wildcard plots/fig-*.gp))
+FIG_BACKEND := $(if $(filter cuda,$(BACKEND)),cuda,cpu)
+.PHONY: $(FIGURES)
+figures: $(FIGURES)
+$(filter-out fig-work-precision,$(FIGURES)): deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(FIG_BACKEND)/blaze_tests
+	@mkdir -p $(FIGURE_DIR)
+	BLAZE_FIGURE_DIR=$(FIGURE_DIR) $(BUILD)/$(FIG_BACKEND)/blaze_tests --log_level=message --report_level=short \
+	  --color_output=no --run_test=$$(sed -n 's/^# test: *//p' plots/$@.gp)
+	gnuplot -e "datadir='$(FIGURE_DIR)'" plots/$@.gp
+	@echo "wrote plots/$@.png"
+
+# verification/README.md from the committed result tables (verification/results/*.tsv); a fresh
+# CPU run's table replaces results/cpu.tsv when there is one.
+verification-readme:
+	@mkdir -p verification/results
+	@if [ -s $(BUILD)/cpu/verification.tsv ]; then cp $(BUILD)/cpu/verification.tsv verification/results/cpu.tsv; fi
+	python3 tools/verification_table.py verification/README.md.in verification/results/*.tsv > verification/README.md
 
 # The main job: the default study on the GPU when one is present.
 RUN_BACKEND := $(if $(and $(HAVE_GPU),$(NVCC)),cuda,cpu)
 run: deps
 	@echo "make run: backend = $(RUN_BACKEND) ($(if $(HAVE_GPU),GPU found,no GPU found: running on the CPU))"
-	@$(MAKE) --no-print-directory -j$(NPROC) build/$(RUN_BACKEND)/study_hopper
-	build/$(RUN_BACKEND)/study_hopper studies/hopper/hopper.params
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
+	$(BUILD)/$(RUN_BACKEND)/study_hopper studies/hopper/hopper.params
 
 bench: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) build/$(RUN_BACKEND)/blaze_bench
-	build/$(RUN_BACKEND)/blaze_bench --out bench/results
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze_bench
+	$(BUILD)/$(RUN_BACKEND)/blaze_bench --out bench/results
 
 clean:
-	rm -rf build
+	rm -rf $(BUILD)

@@ -11,11 +11,11 @@ struct Integrate {
   Shape shape;
   ParticleView<Real> p;
   Real dt;
-  Vec3<Real> gravity;
+  BodyForces<Real> body;
   BLAZE_HD void operator()(Index i) const {
-    if constexpr (S == Stage::prime) Integrator::template prime<Features>(shape, p, i, gravity);
-    if constexpr (S == Stage::pre_force) Integrator::template pre_force<Features>(shape, p, i, dt, gravity);
-    if constexpr (S == Stage::post_force) Integrator::template post_force<Features>(shape, p, i, dt, gravity);
+    if constexpr (S == Stage::prime) Integrator::template prime<Features>(shape, p, i, body);
+    if constexpr (S == Stage::pre_force) Integrator::template pre_force<Features>(shape, p, i, dt, body);
+    if constexpr (S == Stage::post_force) Integrator::template post_force<Features>(shape, p, i, dt, body);
   }
 };
 

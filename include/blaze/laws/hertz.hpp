@@ -1,26 +1,37 @@
-// Hertzian spring with delta^(1/2) dashpot (thesis eqs. 3.6-3.7, section 3.3.1; damping after
-// Bell et al. and Tsuji et al. 1992).
+// Hertzian spring with two dashpot forms (thesis eqs. 3.6-3.7, section 3.3.1).
 //
-//   F_n = K_n delta^(3/2) + K_D delta^(1/2) v_n,     force on body i: -F_n n
+//   F_n = K_n delta^(3/2) + [K_D delta^(1/2) + eta sqrt(m_eff K_n) delta^(1/4)] v_n,   force on i: -F_n n
 //   K_n = (4/3) E* sqrt(R*)
 //
-// delta: overlap (m); v_n: approach speed (m/s); E*: effective modulus (Pa), for one material
-// E / (2 (1 - nu^2)); R* = r_eff (m); K_D: damping coefficient (kg s^-1 m^-1/2).
+// delta: overlap (m); v_n: approach speed (m/s, > 0 closing); E*: effective modulus (Pa), for one
+// material E / (2 (1 - nu^2)), for two 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; R* = r_eff (m);
+// m_eff: effective mass (kg).
+// - K_D (kg s^-1 m^-1/2): the thesis's delta^(1/2) damping (after Bell et al. 2005). Its
+//   restitution falls with impact speed (e depends on K_D m^-2/5 K_n^-3/5 v^1/5).
+// - eta (-): delta^(1/4) damping (Tsuji et al. 1992): restitution independent of speed, mass and
+//   stiffness; from_restitution() picks eta so that e is exact (hertz_restitution.hpp).
+// Use one or the other (both may be set; they add).
+// no_tension clamps F_n at 0: near separation either dashpot outpulls the vanishing spring and
+// the contact would attract (thesis Fig 3.12 shows it); the clamp removes that.
 // The thesis tunes K_n by hand for one particle size; from_stiffness() reproduces that K_n exactly
 // for contacts of effective radius r_ref and scales it with sqrt(R*) for the others, as Hertz does.
-// Contact duration of an elastic head-on impact at speed v:
-//   delta_max = (5 m_eff v^2 / (4 K_n))^(2/5),  t_c = (4/5) B(2/5, 1/2) delta_max / v = 2.9432 delta_max / v.
+// Elastic head-on impact at speed v:
+//   delta_max = (5 m_eff v^2 / (4 K_n))^(2/5),  t_c = (4/5) B(2/5, 1/2) delta_max / v = 2.9432 delta_max / v,
+//   F_max = K_n delta_max^(3/2).
 #pragma once
 #include <cmath>
 #include <stdexcept>
 #include "blaze/core/math.hpp"
+#include "blaze/laws/hertz_restitution.hpp"
 
 namespace blaze {
 
 template <class Real>
 struct Hertz {
-  Real k_hat;  // (4/3) E*, Pa
-  Real kd;     // kg s^-1 m^-1/2
+  Real k_hat;               // (4/3) E*, Pa
+  Real kd;                  // kg s^-1 m^-1/2, delta^(1/2) damping
+  Real eta = 0;             // -, delta^(1/4) damping
+  bool no_tension = false;  // clamp F_n >= 0
 
   static Hertz from_modulus(double e_star, double kd) {
     if (!(e_star > 0)) throw std::invalid_argument("hertz: effective modulus E* must be > 0 Pa");
@@ -32,10 +43,29 @@ struct Hertz {
     if (!(kn > 0) || !(r_ref > 0)) throw std::invalid_argument("hertz: K_n and r_ref must be > 0");
     return from_modulus(0.75 * kn / std::sqrt(r_ref), kd);
   }
+  // Exact coefficient of restitution e in (0, 1] for every contact (delta^(1/4) damping).
+  static Hertz from_restitution(double e_star, double e, bool clamp_tension = false) {
+    Hertz h = from_modulus(e_star, 0);
+    h.eta = static_cast<Real>(hertz_damping_for_restitution(e, clamp_tension));
+    h.no_tension = clamp_tension;
+    return h;
+  }
+  Hertz without_tension() const {
+    Hertz h = *this;
+    h.no_tension = true;
+    return h;
+  }
 
-  BLAZE_HD Real normal_force(Real delta, Real v_n, Real /*m_eff*/, Real r_eff) const {
+  // Elastic part K_n delta^(3/2) (N), for diagnostics.
+  BLAZE_HD Real elastic_force(Real delta, Real r_eff) const { return k_hat * sqrt_r(r_eff) * delta * sqrt_r(delta); }
+
+  BLAZE_HD Real normal_force(Real delta, Real v_n, Real m_eff, Real r_eff) const {
+    const Real k_n = k_hat * sqrt_r(r_eff);
     const Real sd = sqrt_r(delta);
-    return k_hat * sqrt_r(r_eff) * delta * sd + kd * sd * v_n;
+    Real damping = kd * sd;
+    if (eta != Real(0)) damping += eta * sqrt_r(m_eff * k_n * sd);
+    const Real f = k_n * delta * sd + damping * v_n;
+    return no_tension ? max_r(f, Real(0)) : f;
   }
   // dF/d(delta) (N/m), for the critical time step.
   Real stiffness(Real delta, Real r_eff) const { return Real(1.5) * k_hat * std::sqrt(r_eff * delta); }

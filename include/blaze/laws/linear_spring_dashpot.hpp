@@ -9,6 +9,9 @@
 // contact (the damped oscillator's half period), whatever the impact speed.
 // Contact duration: t_c = pi / sqrt(K_n/m_eff - (C_n / 2 m_eff)^2).
 // The thesis writes C_n with a positive ln(e) factor, i.e. negative; beta here is >= 0.
+// no_tension clamps F_n at 0 (the dashpot pulls near separation; a clamped contact does not, and
+// then e is no longer the formula's: the contact ends early, at F_n = 0).
+// At first touch the dashpot makes the force jump from 0 to C_n v_n (Cundall & Strack's model).
 #pragma once
 #include <cmath>
 #include <stdexcept>
@@ -20,6 +23,7 @@ template <class Real>
 struct LinearSpringDashpot {
   Real kn;    // N/m
   Real beta;  // dimensionless damping factor, 2x the damping ratio
+  bool no_tension = false;
 
   static LinearSpringDashpot from_restitution(double kn, double e) {
     if (!(kn > 0)) throw std::invalid_argument("linear spring-dashpot: stiffness kn must be > 0 N/m");
@@ -31,8 +35,16 @@ struct LinearSpringDashpot {
 
   // Scalar normal force (N, positive = repulsive) for overlap delta and approach speed v_n.
   BLAZE_HD Real normal_force(Real delta, Real v_n, Real m_eff, Real /*r_eff*/) const {
-    return kn * delta + beta * sqrt_r(kn * m_eff) * v_n;
+    const Real f = kn * delta + beta * sqrt_r(kn * m_eff) * v_n;
+    return no_tension ? max_r(f, Real(0)) : f;
   }
+  LinearSpringDashpot without_tension() const {
+    LinearSpringDashpot l = *this;
+    l.no_tension = true;
+    return l;
+  }
+  // Elastic part K_n delta (N), for diagnostics.
+  BLAZE_HD Real elastic_force(Real delta, Real /*r_eff*/) const { return kn * delta; }
   // Normal stiffness at this overlap (N/m), for the critical time step.
   Real stiffness(Real /*delta*/, Real /*r_eff*/) const { return kn; }
 };

@@ -12,7 +12,8 @@ template <class Real>
 struct ParticleView {
   Index n;  // active particles: [0, n)
   Vec3Field<Real> position, velocity, angular_velocity, force, torque;
-  Vec3Field<Real> acceleration_prev;  // only for integrators that need a(t-1); null otherwise
+  // a(t) and T(t) of the last force evaluation, for integrators that keep them; null otherwise.
+  Vec3Field<Real> acceleration_prev, torque_prev;
   QuatField<Real> orientation;
   const Real* radius;
   const Real* inv_mass;
@@ -33,7 +34,7 @@ struct Gather {
 template <class Real, class Space>
 class ParticleStore {
  public:
-  void upload(const ParticleState<Real>& s, bool keep_previous_acceleration) {
+  void upload(const ParticleState<Real>& s, bool keep_previous_forces) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
     std::vector<Real> inv_m(n_), inv_i(n_);
@@ -45,10 +46,9 @@ class ParticleStore {
     upload_vec3(velocity_, s.velocity);
     upload_vec3(angular_velocity_, s.angular_velocity);
     for (auto* f : {&force_, &torque_}) resize3(*f, n_);
-    resize3(acceleration_prev_, keep_previous_acceleration ? n_ : 0);
-    if (keep_previous_acceleration) {
-      const std::vector<Vec3<Real>> zero(n_, Vec3<Real>{0, 0, 0});
-      upload_vec3(acceleration_prev_, zero);
+    for (auto* f : {&acceleration_prev_, &torque_prev_}) {
+      resize3(*f, keep_previous_forces ? n_ : 0);
+      if (keep_previous_forces) upload_vec3(*f, std::vector<Vec3<Real>>(n_, Vec3<Real>{0, 0, 0}));
     }
     std::vector<Real> qw(n_), qx(n_), qy(n_), qz(n_);
     for (Index i = 0; i < n_; ++i) {
@@ -93,7 +93,7 @@ class ParticleStore {
 
   ParticleView<Real> view() {
     return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
-            field(torque_), field(acceleration_prev_),
+            field(torque_), field(acceleration_prev_), field(torque_prev_),
             {orientation_[0].data(), orientation_[1].data(), orientation_[2].data(), orientation_[3].data()},
             radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), type_.data(), id_.data()};
   }
@@ -106,7 +106,8 @@ class ParticleStore {
   // Force and torque are recomputed before they are read, so they are not moved.
   void permute(const Index* perm) {
     for (auto* f : {&position_, &velocity_, &angular_velocity_}) permute3(*f, perm);
-    if (acceleration_prev_[0].size()) permute3(acceleration_prev_, perm);
+    for (auto* f : {&acceleration_prev_, &torque_prev_})
+      if ((*f)[0].size()) permute3(*f, perm);
     for (auto& c : orientation_) permute_one(c, scratch_real_, perm);
     permute_one(radius_, scratch_real_, perm);
     permute_one(inv_mass_, scratch_real_, perm);
@@ -119,7 +120,7 @@ class ParticleStore {
   // Bytes held per particle (for benchmarks).
   std::size_t bytes() const {
     std::size_t b = 0;
-    for (const auto* f : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_})
+    for (const auto* f : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
       for (const auto& c : *f) b += c.size() * sizeof(Real);
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
     b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size()) * sizeof(Real);
@@ -160,7 +161,7 @@ class ParticleStore {
   }
 
   Index n_ = 0;
-  Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_;
+  Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_, torque_prev_;
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
   Buffer<std::uint8_t, Space> material_, type_;

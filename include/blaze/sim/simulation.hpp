@@ -23,6 +23,7 @@ struct SimulationParams {
   Vec3<Real> domain_lo; // m; particles leaving [lo, hi) are removed and counted
   Vec3<Real> domain_hi; // m
   Real skin;            // m, neighbour-list margin; 0 rebuilds whenever anything moves
+  Real drag = 0;        // kg/m, quadratic air drag F = -drag |v| v on every particle (0: none)
 };
 
 template <class Space, class Shape, class Law, class Integrator, class Kinematics = ContactPointVelocity,
@@ -36,8 +37,9 @@ class Simulation {
       : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, particles), params.skin) {
     if (!(params.dt > 0)) throw std::invalid_argument("simulation: dt must be > 0 s");
     if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
+    if (!(params.drag >= 0)) throw std::invalid_argument("simulation: drag must be >= 0 kg/m");
     check_materials(laws, world, particles);
-    store_.upload(particles, Integrator::needs_previous_acceleration);
+    store_.upload(particles, Integrator::keeps_previous_forces);
     world_.upload(world);
     initial_count_ = store_.size();
     refresh_neighbours();
@@ -132,7 +134,7 @@ class Simulation {
 
   template <Stage S>
   Integrate<Integrator, Shape, Features, Real, S> integrate() {
-    return {shape_, store_.view(), params_.dt, params_.gravity};
+    return {shape_, store_.view(), params_.dt, {params_.gravity, params_.drag}};
   }
 
   void refresh_neighbours() {
