@@ -106,4 +106,16 @@ constexpr double dissipation_rounding = 1e-6;
 constexpr double vtu_ascii = 1e-7;
 constexpr double vtu_ascii_cancelling = 1e-6;
 
+// --- issue 4: drag fall, quaternion spin, energy conservation (section A) ---
+// (end of section A)
+
+// --- issue 4: Hertz restitution, Chung & Ooi, hysteresis, law properties (section B) ---
+// (end of section B)
+
+// --- issue 4: octahedron on cube, cube at rest, oblique friction, incline (section C) ---
+// (end of section C)
+
+// --- issue 4: contact-type frequency (section D) ---
+// (end of section D)
+
 }  // namespace blaze::tol
