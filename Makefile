@@ -105,6 +105,13 @@ $(filter-out fig-work-precision,$(FIGURES)): deps
 	gnuplot -e "datadir='$(FIGURE_DIR)'" plots/$@.gp
 	@echo "wrote plots/$@.png"
 
+# Error against wall time (studies/work_precision): writes verification/results/work_precision_<backend>.*
+fig-work-precision: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(FIG_BACKEND)/study_work_precision
+	$(BUILD)/$(FIG_BACKEND)/study_work_precision
+	gnuplot plots/fig-work-precision.gp
+	@echo "wrote plots/fig-work-precision.png"
+
 # verification/README.md from the committed result tables (verification/results/*.tsv); a fresh
 # CPU run's table replaces results/cpu.tsv when there is one.
 verification-readme:

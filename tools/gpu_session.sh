@@ -3,15 +3,23 @@
 # runs the CUDA verification suite, the benchmark (default skin and no skin) and the default study,
 # writing logs and result CSVs to the folder given (default /tmp/blaze-gpu).
 # The tree may come without .git: pass BLAZE_COMMIT=<hash> so results name their commit.
+# GSL (used by the suite's references) is not installed there: ../shared/tools/device-deps.sh puts
+# its .debs in .devdeps/, which the device call carries; they are unpacked here.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-/tmp/blaze-gpu}
 mkdir -p "$out"
 export BLAZE_SKIP_DEPS=1 BLAZE_NO_MESHIO=1
+if [ -d .devdeps ] && ! [ -e /usr/include/gsl/gsl_odeiv2.h ]; then
+  mkdir -p /tmp/dd && for f in .devdeps/*.deb; do dpkg -x "$f" /tmp/dd; done
+  export CPATH=/tmp/dd/usr/include${CPATH:+:$CPATH} LIBRARY_PATH=/tmp/dd/usr/lib/x86_64-linux-gnu${LIBRARY_PATH:+:$LIBRARY_PATH} \
+         LD_LIBRARY_PATH=/tmp/dd/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+fi
 n=$(nproc)
 nvidia-smi -L
 make test BACKEND=cuda NPROC="$n" > "$out/test.log" 2>&1
 echo "make test BACKEND=cuda: rc=$?"
+cp build/cuda/verification.tsv "$out/" 2>/dev/null
 sed 's/\x1b\[[0-9;]*m//g' "$out/test.log" | grep -a "CPU vs GPU\|verification on\|test cases\|assertions\|error\|cube packing\|tumbling\|normal:\|polyhedron contact" | tail -20
 make bench NPROC="$n" > "$out/bench.log" 2>&1
 echo "make bench: rc=$?"

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Renders verification/README.md: the template with @TABLE@ replaced by the suite's rows.
+"""Renders verification/README.md: the template with @TABLE@ replaced by the suite's rows and
+@WORK_PRECISION@ by the work-precision study's tables (results/work_precision_*.md beside the tsv files).
 
 Usage: verification_table.py TEMPLATE RESULTS.tsv [RESULTS.tsv ...] > README.md
 Each results file is what one run of the suite wrote through BLAZE_REPORT (verification/report.hpp):
 case, quantity, thesis, limit, measured, pass/FAIL, backend, source. Its file name (cpu,
 nvidia-h200, ...) becomes the column header of its measured values.
 """
+import glob
 import os
 import sys
 
@@ -39,7 +41,12 @@ def main():
         lines.append(f"| {shown} | {quantity} | {r['thesis']} | {r['limit']} | {measured} | {r['source']} |")
     with open(template, encoding="utf-8") as f:
         text = f.read()
-    sys.stdout.write(text.replace("@TABLE@", "\n".join(lines)))
+    parts = []
+    for md in sorted(glob.glob(os.path.join(os.path.dirname(results[0]) if results else ".", "work_precision_*.md"))):
+        with open(md, encoding="utf-8") as f:
+            parts.append(f.read().strip())
+    work = "\n\n".join(parts) if parts else "(not run yet: `make fig-work-precision`)"
+    sys.stdout.write(text.replace("@TABLE@", "\n".join(lines)).replace("@WORK_PRECISION@", work))
 
 
 if __name__ == "__main__":

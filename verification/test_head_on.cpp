@@ -6,6 +6,10 @@
 #include <boost/test/unit_test.hpp>
 #include <boost/mpl/list.hpp>
 #include <cmath>
+#include <algorithm>
+#include <string>
+#include <utility>
+#include "verification/report.hpp"
 #include "verification/scenes.hpp"
 
 using namespace blaze;
@@ -93,17 +97,28 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(hertz_rebound_and_duration, Real, Reals) {
 }
 
 // With damping the linear law's restitution coefficient is exactly e at every speed (eq. 2.2).
+// The dashpot sees the predicted full-step velocity of the default Verlet (integrators.hpp), so the
+// measured e converges at second order: within the verification issue's 1% already at a coarse
+// t_c/50 (t_c = pi / sqrt(k / m_eff), the undamped half period), far below it at t_c/400.
 BOOST_AUTO_TEST_CASE(linear_spring_dashpot_restitution) {
   const double k = 1e5, m = kDensity * 4.0 / 3.0 * kPi * std::pow(kRadius, 3);
-  for (double e : {0.2, 0.5, 0.9}) {
-    const auto law = LinearLaw<double>{LinearSpringDashpot<double>::from_restitution(k, e), HistoryFreeFriction<double>::make(0.3, 1.0)};
-    const double t_c = kPi / std::sqrt(k / (0.5 * m));
-    for (double v : {0.1, 2.0}) {
-      const Outcome o = collide_head_on(law, v, t_c / 400);
-      BOOST_TEST_CONTEXT("e = " << e << ", v = " << v) {
-        BOOST_TEST(std::fabs(o.rebound_ratio / e - 1) <= tol::restitution_linear);
+  const double t_c = kPi / std::sqrt(k / (0.5 * m));
+  for (const auto& [steps, limit] : {std::pair<double, double>{50, tol::restitution_linear_coarse}, {400, tol::restitution_linear}}) {
+    double worst = 0;
+    for (double e : {0.2, 0.5, 0.9}) {
+      const auto law = LinearLaw<double>{LinearSpringDashpot<double>::from_restitution(k, e), HistoryFreeFriction<double>::make(0.3, 1.0)};
+      for (double v : {0.1, 2.0}) {
+        const Outcome o = collide_head_on(law, v, t_c / steps);
+        BOOST_TEST_MESSAGE("linear restitution, dt = t_c/" << steps << ", e = " << e << ", v = " << v << ": e_out / e - 1 = "
+                                                           << o.rebound_ratio / e - 1);
+        worst = std::max(worst, std::fabs(o.rebound_ratio / e - 1));
       }
     }
+    check_at_most({"Linear spring-dashpot restitution (eq. 2.2)",
+                   "max |e_out / e - 1|, e 0.2/0.5/0.9, v 0.1/2 m/s, velocity Verlet, double, dt = t_c/" +
+                       std::to_string(static_cast<int>(steps)),
+                   "-", "beta = -2 ln e / sqrt(ln^2 e + pi^2) gives e exactly"},
+                  worst, limit);
   }
 }
 

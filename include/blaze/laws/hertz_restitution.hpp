@@ -15,13 +15,23 @@
 // With no_tension the total force is clamped at zero (a contact never pulls); near separation
 // the damping would otherwise exceed the spring (y^(1/4) outlives y^(3/2)), and the clamp changes
 // e, so the inversion accounts for it.
+//
+// Without the clamp a strongly damped contact never separates: the tensile damping holds the body
+// and it creeps out ever more slowly. The equation is invariant under y -> l y, s -> l^(-1/4) s,
+// so on unloading (v < 0) the ratio c = -v / y^(5/4) obeys the exact autonomous equation
+//   dc/dtau = (5 c^2 - 4 eta c + 4) / c,     tau = -ln(y) / 4 (growing towards y = 0).
+// For eta <= sqrt(5) the right side is positive: c grows without bound and the body separates.
+// For eta > sqrt(5) it has roots c_- < c_+; once c < c_+ the body is trapped on the creeping
+// solution v = -c_- y^(5/4), which reaches y = 0 only as v -> 0: e = 0 (the body sticks). The
+// integration stops there rather than follow the creep (a time step proportional to y would
+// need ~1e11 steps).
 #pragma once
 #include <cmath>
 #include <stdexcept>
 
 namespace blaze {
 
-// e(eta), to ~1e-9. The step is h_max in the scaled time (the elastic contact lasts 3.2199),
+// e(eta), to ~1e-9. The step is h_max in the scaled time (the elastic contact lasts 3.2181),
 // shrunk to a fraction of y near y = 0 where y^(1/4) has an unbounded derivative (a fixed step
 // there converges only at order 5/4).
 inline double hertz_restitution(double eta, bool no_tension, double h_max = 1e-4) {
@@ -31,8 +41,11 @@ inline double hertz_restitution(double eta, bool no_tension, double h_max = 1e-4
     const double f = yp * std::sqrt(yp) + eta * std::sqrt(std::sqrt(yp)) * v;
     return -(no_tension && f < 0 ? 0 : f);
   };
+  // Sticking threshold c_+ of the free contact (header comment); none with the clamp or eta^2 <= 5.
+  const double c_stick = !no_tension && eta * eta > 5 ? (2 * eta + std::sqrt(4 * eta * eta - 20)) / 5 : 0;
   double y = 0, v = 1;
   for (long k = 0; k < 100000000L; ++k) {
+    if (v < 0 && -v < c_stick * y * std::sqrt(std::sqrt(y))) return 0;  // trapped: creeps, never separates
     const double h = std::fmin(h_max, std::fmax(1e-12, 1e-2 * y));
     const double k1y = v, k1v = accel(y, v);
     const double k2y = v + 0.5 * h * k1v, k2v = accel(y + 0.5 * h * k1y, v + 0.5 * h * k1v);
