@@ -12,6 +12,11 @@ import os
 import sys
 
 
+def cell(text):
+    """A markdown table cell: a '|' inside (absolute values) would end the cell."""
+    return text.replace("|", "\\|")
+
+
 def main():
     template, results = sys.argv[1], sys.argv[2:]
     columns, rows, order = [], {}, []
@@ -37,8 +42,9 @@ def main():
         r = rows[(case, quantity)]
         shown = case if case != last_case else ""
         last_case = case
-        measured = " | ".join(r["measured"].get(c, "-") for c in columns)
-        lines.append(f"| {shown} | {quantity} | {r['thesis']} | {r['limit']} | {measured} | {r['source']} |")
+        measured = " | ".join(cell(r["measured"].get(c, "-")) for c in columns)
+        fields = [cell(shown), cell(quantity), cell(r["thesis"]), cell(r["limit"]), measured, cell(r["source"])]
+        lines.append("| " + " | ".join(fields) + " |")
     with open(template, encoding="utf-8") as f:
         text = f.read()
     parts = []
