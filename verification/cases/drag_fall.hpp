@@ -25,11 +25,11 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
+#include "verification/cases/timed_run.hpp"
 #include "verification/scenes.hpp"
 
 namespace blaze::test::cases {
@@ -150,16 +150,7 @@ DragFallResult drag_fall(double dt, const DragFall& p = {}) {
     out.samples.x.push_back(-static_cast<double>(st.position[0].y));
     out.samples.v.push_back(-static_cast<double>(st.velocity[0].y));
   };
-  sample();
-  for (long done = 0; done < steps;) {
-    const long n = std::min(per_sample, steps - done);
-    const auto t0 = std::chrono::steady_clock::now();
-    sim.run(static_cast<std::uint64_t>(n));
-    fence(DefaultSpace{});
-    out.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    done += n;
-    sample();
-  }
+  out.wall_s = run_sampled(sim, steps, per_sample, sample);
   out.steps = sim.steps();
   out.errors = max_relative_error(out.samples, drag_fall_exact(p, out.samples.t));
   out.error = out.errors.worst();

@@ -33,12 +33,12 @@
 // work-precision study use it.
 #pragma once
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <stdexcept>
 #include <vector>
+#include "verification/cases/timed_run.hpp"
 #include "verification/scenes.hpp"
 
 namespace blaze::test::cases {
@@ -191,16 +191,7 @@ FallingParticlesResult falling_particles(double dt, const FallingParticles& p = 
     if (t <= 0.25 * p.duration) out.error_first_quarter = std::fmax(out.error_first_quarter, std::fabs(rel));
     if (t >= 0.75 * p.duration) out.error_last_quarter = std::fmax(out.error_last_quarter, std::fabs(rel));
   };
-  sample();
-  for (long done = 0; done < steps;) {
-    const long n = std::min(per_sample, steps - done);
-    const auto t0 = std::chrono::steady_clock::now();
-    sim.run(static_cast<std::uint64_t>(n));
-    fence(DefaultSpace{});
-    out.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    done += n;
-    sample();
-  }
+  out.wall_s = run_sampled(sim, steps, per_sample, sample);
   out.steps = sim.steps();
   out.removed = static_cast<long>(sim.removed_count());
   return out;
