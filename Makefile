@@ -31,7 +31,9 @@ TEST_LIBS_cpu := -lboost_unit_test_framework -lgsl -lgslcblas
 TEST_LIBS_cuda := -lgsl -lgslcblas
 PLOT_LIBS := $(if $(wildcard /usr/include/gnuplot-iostream.h),-lboost_iostreams -lboost_filesystem -lboost_system)
 
-HEADERS := $(shell find include kernels verification studies bench -name '*.hpp')
+HEADERS := $(shell find include kernels verification studies bench apps -name '*.hpp')
+# Host-only sources, compiled by g++ for both backends (toml++ does not compile under nvcc).
+HOST_OBJ := $(BUILD)/host/src/scene_toml.o
 TEST_SRC ?= $(wildcard verification/*.cpp)
 STUDIES := $(notdir $(wildcard studies/*))
 
@@ -43,6 +45,9 @@ deps:
 	@tools/ensure_deps.sh
 
 # ---- objects: build/<backend>/<path>.o --------------------------------------------------------
+$(BUILD)/host/%.o: %.cpp $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
 $(BUILD)/cpu/%.o: %.cpp $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
@@ -50,10 +55,16 @@ $(BUILD)/cuda/%.o: %.cpp $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(NVCC) $(NVCCFLAGS) -x cu -c $< -o $@
 
-$(BUILD)/cpu/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cpu/%.o)
+$(BUILD)/cpu/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cpu/%.o) $(HOST_OBJ)
 	$(CXX) -fopenmp $^ -o $@ $(TEST_LIBS_cpu)
-$(BUILD)/cuda/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cuda/%.o)
+$(BUILD)/cuda/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cuda/%.o) $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(TEST_LIBS_cuda)
+
+# blaze run SCENE.toml: the general scene runner, one per backend.
+$(BUILD)/cpu/blaze: $(BUILD)/cpu/apps/blaze/main.o $(HOST_OBJ)
+	$(CXX) -fopenmp $^ -o $@
+$(BUILD)/cuda/blaze: $(BUILD)/cuda/apps/blaze/main.o $(HOST_OBJ)
+	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
 $(BUILD)/cpu/study_%: $(BUILD)/cpu/studies/%/main.o
 	$(CXX) -fopenmp $^ -o $@ $(PLOT_LIBS)
@@ -64,8 +75,8 @@ $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 $(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench
-build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD)/cuda/blaze_bench
+build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze
+build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD)/cuda/blaze_bench $(BUILD)/cuda/blaze
 
 # Compile (not run) the CUDA build so GPU code cannot rot unseen.
 check-cuda:

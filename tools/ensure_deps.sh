@@ -7,7 +7,8 @@ if [ -n "${BLAZE_SKIP_DEPS:-}" ]; then
   exit 0
 fi
 pkgs=(g++ make libeigen3-dev libboost-test-dev libgsl-dev gnuplot-nox libgnuplot-iostream-dev
-      libboost-iostreams-dev libboost-filesystem-dev libboost-system-dev python3 python3-meshio libgomp1)
+      libboost-iostreams-dev libboost-filesystem-dev libboost-system-dev python3 python3-meshio libgomp1
+      libtomlplusplus-dev python3-vtk9)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

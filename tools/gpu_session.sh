@@ -3,8 +3,9 @@
 # runs the CUDA verification suite, the benchmark (default skin and no skin) and the default study,
 # writing logs and result CSVs to the folder given (default /tmp/blaze-gpu).
 # The tree may come without .git: pass BLAZE_COMMIT=<hash> so results name their commit.
-# GSL (used by the suite's references) is not installed there: ../shared/tools/device-deps.sh puts
-# its .debs in .devdeps/, which the device call carries; they are unpacked here.
+# GSL (the suite's references) and toml++ (scene files) are not installed there:
+# `../shared/tools/device-deps.sh libtomlplusplus-dev` puts their .debs in .devdeps/, which the
+# device call carries; they are unpacked here.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-/tmp/blaze-gpu}

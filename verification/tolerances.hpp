@@ -279,4 +279,11 @@ constexpr double contact_kind_band = 0.10;
 constexpr double contact_kind_sigmas = 4;
 // (end of section D)
 
+// --- scene files (issue 5) ---
+// Contact time measured as the span of steps with overlap at dt = t_c/2000: each end is found to
+// within one step, so the span is within 2 dt = 1e-3 t_c; twice that for safety.
+constexpr double scene_contact_time = 2e-3;
+// Mutated scenes in the parser fuzz: the issue's 10^4 (each parse takes ~0.1 ms).
+constexpr int scene_fuzz_mutations = 10000;
+
 }  // namespace blaze::tol

@@ -23,15 +23,8 @@ constexpr double kThesisBoundingRadius = 2.5e-3;  // m (thesis section 3.3.1.1: 
 constexpr double kThesisDensity = 2500;           // kg/m^3 (assumed: the thesis gives none)
 constexpr double kThesisKn = 1e9;                 // N/m^(3/2) (thesis: "N.cm^-1")
 
-// A shipped shape scaled so its bounding radius is `bounding_radius` (m).
-inline ConvexShape scaled_shape(const std::string& path, double bounding_radius) {
-  const ConvexShape s = load_shape(path);
-  std::vector<Eigen::Vector3d> v;
-  for (const auto& p : s.vertices) v.push_back(p * (bounding_radius / s.bounding_radius));
-  return make_convex_shape(s.name, v, s.faces, path + " (scaled)");
-}
-inline ConvexShape thesis_cube() { return scaled_shape("data/shapes/cube.shape", kThesisBoundingRadius); }
-inline ConvexShape thesis_octahedron() { return scaled_shape("data/shapes/octahedron.shape", kThesisBoundingRadius); }
+inline ConvexShape thesis_cube() { return load_scaled_shape("data/shapes/cube.shape", kThesisBoundingRadius); }
+inline ConvexShape thesis_octahedron() { return load_scaled_shape("data/shapes/octahedron.shape", kThesisBoundingRadius); }
 
 // The rotation taking the body-frame directions a1, a2 (orthogonal) to the world directions b1, b2.
 template <class Real>

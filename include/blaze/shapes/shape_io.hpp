@@ -122,4 +122,12 @@ inline ConvexShape load_shape(const std::string& path) {
   return obj ? parse_obj(in, path) : parse_blaze_shape(in, path);
 }
 
+// A shape file scaled so its bounding radius is `bounding_radius` (m).
+inline ConvexShape load_scaled_shape(const std::string& path, double bounding_radius) {
+  const ConvexShape s = load_shape(path);
+  std::vector<Eigen::Vector3d> v;
+  for (const auto& p : s.vertices) v.push_back(p * (bounding_radius / s.bounding_radius));
+  return make_convex_shape(s.name, v, s.faces, path + " (scaled)");
+}
+
 }  // namespace blaze

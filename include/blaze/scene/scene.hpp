@@ -1,0 +1,140 @@
+// A scene: everything a run needs, in SI units, as read from a scene file (scene_file.hpp, TOML).
+// Plain host data in double; scene_build.hpp turns it into particles, world and contact laws for a
+// Simulation of any precision and backend. Every value here has passed validation: positive
+// radii and densities, restitution in (0, 1], Poisson ratio in (-1, 0.5), dt > 0, known names.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include "blaze/core/vec3.hpp"
+
+namespace blaze {
+
+// A rejected scene: the message names the file, line, key, the value given and what is allowed.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class LawKind { linear, hertz };
+enum class PrecisionKind { float32, float64 };
+enum class BackendKind { automatic, cpu, gpu };
+
+inline const char* to_string(LawKind k) { return k == LawKind::linear ? "linear" : "hertz"; }
+inline const char* to_string(PrecisionKind p) { return p == PrecisionKind::float32 ? "float" : "double"; }
+inline const char* to_string(BackendKind b) {
+  return b == BackendKind::automatic ? "auto" : b == BackendKind::cpu ? "cpu" : "gpu";
+}
+
+struct MaterialSpec {
+  std::string name;
+  double density = 0;         // kg/m^3
+  double youngs_modulus = 0;  // Pa (Hertz law; 0 when not given)
+  double poisson_ratio = 0;   // - (Hertz law)
+};
+
+// Contact parameters of one material pair (order does not matter).
+struct PairSpec {
+  int a = 0, b = 0;               // indices into Scene::materials
+  double stiffness = 0;           // linear: k (N/m); 0 when contact_time is given
+  double contact_time = 0;        // linear: s, undamped, for the lightest pair of these materials
+  double restitution = 1;         // -, (0, 1]
+  double friction = 0;            // -, Coulomb mu >= 0
+  double tangential_damping = 0;  // kg/s, K_T of eq. 2.3
+  bool no_tension = false;        // clamp the normal force at 0 (no attraction near separation)
+};
+
+// A particle type: a sphere of `radius` or a convex polyhedron from `shape` scaled to
+// `bounding_radius`.
+struct ParticleTypeSpec {
+  std::string name;
+  int material = 0;
+  double radius = 0;           // m, spheres
+  std::string shape;           // path of a .shape/.obj file, polyhedra
+  double bounding_radius = 0;  // m, polyhedra
+  double volume = 0;           // m^3, filled in by the parser (polyhedra: of the scaled shape)
+  bool is_sphere() const { return shape.empty(); }
+  double size() const { return is_sphere() ? radius : bounding_radius; }
+};
+
+// Placements (thesis section 2.5: lattice blocks; plus explicit lists and random fills).
+struct LatticeSpec {
+  int type = 0;
+  Vec3<double> origin;            // m, centre of the first site
+  std::array<long, 3> count{};    // sites along x, y, z
+  double spacing = 0;             // m, >= 2 bounding radii
+  Vec3<double> velocity;          // m/s
+  double jitter = 0;              // fraction of the free gap, random offset per site
+  bool random_orientation = true;  // polyhedra
+};
+struct ListSpec {
+  int type = 0;
+  std::vector<Vec3<double>> position;  // m
+  std::vector<Vec3<double>> velocity;  // m/s, empty or one per position
+};
+struct FillSpec {
+  int type = 0;
+  Vec3<double> lo, hi;  // m, box the particles (whole) lie in
+  long count = 0;
+  Vec3<double> velocity;  // m/s
+};
+
+struct WallSpec {  // convex planar polygon; the normal follows the right-hand rule of the vertex order
+  int material = 0;
+  std::vector<Vec3<double>> vertices;  // m
+  std::uint32_t rim_edges = 0xffffffffu;  // bit k: edge k -> k+1 has rim contact
+};
+struct CylinderSpec {  // drum: particles inside, contact on the inner surface
+  int material = 0;
+  Vec3<double> origin, axis;  // m, centre of the first end; direction (any length)
+  double radius = 0, length = 0;
+};
+
+struct OutputSpec {
+  std::string directory;          // created if missing
+  double csv_interval = 0;        // s between CSV rows (0: none)
+  double vtu_interval = 0;        // s between VTU frames (0: none)
+  double penetration_warning = 0.05;  // overlap / radius reported above this (thesis: 5%)
+};
+
+struct Scene {
+  std::string path;  // the scene file
+  LawKind law = LawKind::linear;
+  PrecisionKind precision = PrecisionKind::float64;
+  BackendKind backend = BackendKind::automatic;
+  double dt = 0;                 // s (given, or t_c / steps_per_contact)
+  double steps_per_contact = 0;  // when dt is derived from the contact time
+  double end_time = 0;           // s
+  Vec3<double> gravity;          // m/s^2
+  double drag = 0;               // kg/m
+  Vec3<double> domain_lo, domain_hi;  // m
+  double skin = 0.2;             // neighbour-list skin / largest bounding radius
+  bool force_dt = false;         // run even when dt exceeds the safe fraction of the critical step
+  double max_impact_speed = 0;   // m/s, Hertz stiffness estimate (0: from the scene)
+  std::uint64_t seed = 1;
+  double dt_critical = 0;        // s, filled in by the parser (critical_step.hpp)
+  std::string dt_governing;      // which contact or estimate sets dt_critical
+  OutputSpec output;
+  std::vector<MaterialSpec> materials;
+  std::vector<PairSpec> pairs;
+  std::vector<ParticleTypeSpec> types;
+  std::vector<LatticeSpec> lattices;
+  std::vector<ListSpec> lists;
+  std::vector<FillSpec> fills;
+  std::vector<WallSpec> walls;
+  std::vector<CylinderSpec> cylinders;
+
+  bool all_spheres() const {
+    for (const auto& t : types)
+      if (!t.is_sphere()) return false;
+    return true;
+  }
+  const PairSpec* pair(int a, int b) const {
+    for (const auto& p : pairs)
+      if ((p.a == a && p.b == b) || (p.a == b && p.b == a)) return &p;
+    return nullptr;
+  }
+};
+
+}  // namespace blaze

@@ -1,0 +1,191 @@
+// From a validated Scene to what a Simulation takes: particles (lattice blocks, explicit lists,
+// random non-overlapping fills), the world, the contact-law table and, for polyhedra, the shape
+// table. Templated on precision and law; host code, usable in CUDA translation units (no TOML).
+//
+// Random fill: random sequential addition, uniform positions in the box, rejected while the
+// bounding sphere overlaps any particle already placed (a hash grid of cell 2 r_max finds them);
+// at most 1000 tries per particle, then a SceneError. After all placements, any overlap between
+// particles of different placements is an error naming both.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <unordered_map>
+#include "blaze/contact/polyhedron.hpp"
+#include "blaze/laws/contact_law.hpp"
+#include "blaze/laws/hertz.hpp"
+#include "blaze/laws/history_free_friction.hpp"
+#include "blaze/laws/linear_spring_dashpot.hpp"
+#include "blaze/scene/critical_step.hpp"
+#include "blaze/shapes/shape_io.hpp"
+#include "blaze/world/world.hpp"
+
+namespace blaze {
+
+template <class Real>
+using LinearLaw = ContactLaw<Real, LinearSpringDashpot, HistoryFreeFriction>;
+template <class Real>
+using HertzLaw = ContactLaw<Real, Hertz, HistoryFreeFriction>;
+
+// Contact laws for every material pair of the scene.
+template <class Law>
+PairTable<Law> build_laws(const Scene& s) {
+  using Real = typename Law::real_type;
+  PairTable<Law> table;
+  for (const auto& p : s.pairs) {
+    const auto friction = HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping);
+    if constexpr (std::is_same_v<Law, LinearLaw<Real>>) {
+      auto normal = LinearSpringDashpot<Real>::from_restitution(linear_stiffness(s, p), p.restitution);
+      normal.no_tension = p.no_tension;
+      table.set(p.a, p.b, {normal, friction});
+    } else {
+      const double e_star = pair_physics(s, p.a, p.b, false).e_star;
+      table.set(p.a, p.b, {Hertz<Real>::from_restitution(e_star, p.restitution, p.no_tension), friction});
+    }
+  }
+  return table;
+}
+
+template <class Real>
+World<Real> build_world(const Scene& s) {
+  World<Real> w;
+  for (const auto& p : s.walls)
+    w.polygons.push_back(PlanarPolygon<Real>::make(p.vertices, static_cast<std::uint8_t>(p.material), p.rim_edges));
+  for (const auto& c : s.cylinders)
+    w.cylinders.push_back(Cylinder<Real>::make(c.origin, c.axis, c.radius, c.length, static_cast<std::uint8_t>(c.material)));
+  return w;
+}
+
+// Shape table of a scene with polyhedra: one entry per particle type, in the scene's order.
+template <class Real>
+PolyhedronTable<Real> build_shape_table(const Scene& s) {
+  PolyhedronTable<Real> table;
+  for (const auto& t : s.types) {
+    const double rho = s.materials[static_cast<std::size_t>(t.material)].density;
+    if (t.is_sphere()) table.add_sphere(t.radius, rho);
+    else table.add(load_scaled_shape(t.shape, t.bounding_radius), rho);
+  }
+  return table;
+}
+
+namespace scene_detail {
+
+// Bounding spheres placed so far, hashed on a grid of cell `cell` for overlap queries.
+class Occupancy {
+ public:
+  explicit Occupancy(double cell) : cell_(cell) {}
+  // Index of a placed sphere that overlaps (x, r) by more than `slack` (m), or -1.
+  long overlapping(const Vec3<double>& x, double r, double slack) const {
+    const auto c = cell_of(x);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells_.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+          if (it == cells_.end()) continue;
+          for (long j : it->second) {
+            const double reach = r + radius_[static_cast<std::size_t>(j)] - slack;
+            if (norm2(x - centre_[static_cast<std::size_t>(j)]) < reach * reach) return j;
+          }
+        }
+    return -1;
+  }
+  void add(const Vec3<double>& x, double r) {
+    const auto c = cell_of(x);
+    cells_[key(c[0], c[1], c[2])].push_back(static_cast<long>(centre_.size()));
+    centre_.push_back(x);
+    radius_.push_back(r);
+  }
+
+ private:
+  std::array<long, 3> cell_of(const Vec3<double>& x) const {
+    return {static_cast<long>(std::floor(x.x / cell_)), static_cast<long>(std::floor(x.y / cell_)),
+            static_cast<long>(std::floor(x.z / cell_))};
+  }
+  static std::uint64_t key(long i, long j, long k) {
+    return (static_cast<std::uint64_t>(i & 0x1fffff) << 42) | (static_cast<std::uint64_t>(j & 0x1fffff) << 21) |
+           static_cast<std::uint64_t>(k & 0x1fffff);
+  }
+  double cell_;
+  std::unordered_map<std::uint64_t, std::vector<long>> cells_;
+  std::vector<Vec3<double>> centre_;
+  std::vector<double> radius_;
+};
+
+inline Quat<double> random_orientation(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  return normalized(Quat<double>{g(rng), g(rng), g(rng), g(rng)});
+}
+
+}  // namespace scene_detail
+
+// All particles of the scene, in placement order (lattices, lists, fills); ids follow that order.
+// `shapes` is the scene's shape table for polyhedral scenes, null for spheres.
+template <class Real>
+ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>* shapes) {
+  using scene_detail::Occupancy;
+  double r_max = 0;
+  for (const auto& t : s.types) r_max = std::max(r_max, t.size());
+  Occupancy placed(2 * r_max);
+  std::vector<std::string> origin;  // which placement each particle came from, for messages
+  std::mt19937_64 rng(s.seed);
+  ParticleState<Real> out;
+  const double touch_slack = 1e-9 * r_max;  // lattices at exactly 2 r spacing touch, they do not overlap
+
+  auto add = [&](int type, const Vec3<double>& x, const Vec3<double>& v, bool orient, const std::string& where) {
+    const ParticleTypeSpec& t = s.types[static_cast<std::size_t>(type)];
+    const long j = placed.overlapping(x, t.size(), touch_slack);
+    if (j >= 0)
+      throw SceneError(s.path + ": " + where + " overlaps particle " + std::to_string(j) + " of " +
+                       origin[static_cast<std::size_t>(j)] + " at the start; move or shrink one of the placements");
+    placed.add(x, t.size());
+    origin.push_back(where);
+    const auto mat = static_cast<std::uint8_t>(t.material);
+    const double rho = s.materials[static_cast<std::size_t>(t.material)].density;
+    if (shapes == nullptr) {
+      out.add_sphere(vec_cast<Real>(x), static_cast<Real>(t.radius), static_cast<Real>(rho), mat, vec_cast<Real>(v));
+    } else {
+      const Quat<double> q = orient && !t.is_sphere() ? scene_detail::random_orientation(rng) : Quat<double>::identity();
+      add_polyhedron(out, *shapes, type, vec_cast<Real>(x), Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)}, mat,
+                     vec_cast<Real>(v));
+    }
+  };
+
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::size_t k = 0; k < s.lattices.size(); ++k) {
+    const LatticeSpec& l = s.lattices[k];
+    const double gap = 0.5 * (l.spacing - 2 * s.types[static_cast<std::size_t>(l.type)].size());
+    for (long iz = 0; iz < l.count[2]; ++iz)
+      for (long iy = 0; iy < l.count[1]; ++iy)
+        for (long ix = 0; ix < l.count[0]; ++ix) {
+          Vec3<double> x = l.origin + Vec3<double>{double(ix), double(iy), double(iz)} * l.spacing;
+          if (l.jitter > 0) x += Vec3<double>{u(rng), u(rng), u(rng)} * (l.jitter * gap / std::sqrt(3.0));
+          add(l.type, x, l.velocity, l.random_orientation, "[[lattice]] #" + std::to_string(k + 1));
+        }
+  }
+  for (std::size_t k = 0; k < s.lists.size(); ++k) {
+    const ListSpec& l = s.lists[k];
+    for (std::size_t i = 0; i < l.position.size(); ++i)
+      add(l.type, l.position[i], l.velocity.empty() ? Vec3<double>{0, 0, 0} : l.velocity[i], false,
+          "[[particles]] #" + std::to_string(k + 1) + " point " + std::to_string(i));
+  }
+  for (std::size_t k = 0; k < s.fills.size(); ++k) {
+    const FillSpec& f = s.fills[k];
+    const double r = s.types[static_cast<std::size_t>(f.type)].size();
+    const std::string name = "[[fill]] #" + std::to_string(k + 1);
+    std::uniform_real_distribution<double> ux(f.lo.x + r, f.hi.x - r), uy(f.lo.y + r, f.hi.y - r), uz(f.lo.z + r, f.hi.z - r);
+    for (long i = 0; i < f.count; ++i) {
+      int tries = 0;
+      Vec3<double> x;
+      do {
+        if (++tries > 1000)
+          throw SceneError(s.path + ": " + name + ": no free place for particle " + std::to_string(i) + " of " +
+                           std::to_string(f.count) + " after 1000 random tries; enlarge the box or lower count");
+        x = {ux(rng), uy(rng), uz(rng)};
+      } while (placed.overlapping(x, r, 0) >= 0);
+      add(f.type, x, f.velocity, true, name);
+    }
+  }
+  return out;
+}
+
+}  // namespace blaze

@@ -1,0 +1,27 @@
+// Scene files: TOML (https://toml.io), read with toml++ (Debian libtomlplusplus-dev).
+// Why TOML and not JSON: a scene is written by hand, and TOML has comments (units and reasons go
+// beside each value), typed numbers, arrays of tables for repeated items ([[material]], [[wall]])
+// and no quoting noise; toml++ keeps the line of every value, so errors can name it. JSON has no
+// comments, and nlohmann-json keeps no positions.
+//
+// The parser lives in one host-only translation unit (src/scene_toml.cpp, compiled by g++ in both
+// builds: nvcc cannot compile toml++), so this header has no TOML in it. README.md documents the
+// format with a complete annotated example (data/scenes/drop.toml).
+#pragma once
+#include <string>
+#include <vector>
+#include "blaze/scene/scene.hpp"
+
+namespace blaze {
+
+// Reads and validates a scene file. `overrides` are "key=value" strings from the command line
+// (--set simulation.dt=1e-5, or --set dt=1e-5 for keys of [simulation] and [output]); the value
+// is TOML (numbers, strings in quotes or bare words, [x, y, z] arrays). Relative shape paths are
+// taken from the working directory. Throws SceneError naming file, line, key, value and what is
+// allowed.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The same for scene text already in memory (`name` stands for the file in messages).
+Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
+
+}  // namespace blaze

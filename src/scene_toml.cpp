@@ -1,0 +1,663 @@
+// Scene files in TOML (scene_file.hpp): parsing, command-line overrides and validation.
+// Host only, compiled by g++ in both builds (nvcc cannot parse toml++). Every rejection is a
+// SceneError of the form
+//   <file>:<line>: <table>: key '<key>' = <value given>: <what is allowed>
+// and every key not listed here is an error (a typo must not silently fall back to a default).
+// toml++ 3.3 asserts on some malformed input (for example "[[[material]]") just before it would
+// report the parse error; with assertions off (as in its release builds) it reports the error.
+// The fuzz test in verification/test_scene_file.cpp found this.
+#define TOML_ASSERT(expr) static_cast<void>(0)
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include "blaze/scene/critical_step.hpp"
+#include "blaze/scene/scene_file.hpp"
+#include "blaze/shapes/shape_io.hpp"
+#include "blaze/world/planar_polygon.hpp"
+
+namespace blaze {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr long kMaxParticles = 1L << 31;  // Index is 32-bit
+
+// "file:line", or the command line for values that came from --set (copied nodes keep no source).
+std::string where(const toml::source_region& s, const std::string& file) {
+  if (s.begin.line == 0) return "command line (--set)";
+  return (s.path ? *s.path : file) + ":" + std::to_string(s.begin.line);
+}
+
+// A value as the user wrote it: shortest round-trip numbers, strings in double quotes.
+std::string shown(const toml::node& n) {
+  std::string s;
+  if (const auto* f = n.as_floating_point()) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, f->get());
+    s.assign(buf, r.ptr);
+  } else if (const auto* i = n.as_integer()) {
+    s = std::to_string(i->get());
+  } else if (const auto* str = n.as_string()) {
+    s = "\"" + str->get() + "\"";
+  } else if (const auto* b = n.as_boolean()) {
+    s = b->get() ? "true" : "false";
+  } else if (const auto* a = n.as_array()) {
+    s = "[";
+    for (std::size_t k = 0; k < a->size(); ++k) s += (k ? ", " : "") + shown(*a->get(k));
+    s += "]";
+  } else if (n.is_table()) {
+    s = "{...}";
+  } else {
+    std::ostringstream os;
+    n.visit([&](const auto& v) { os << v; });
+    s = os.str();
+  }
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+// An allowed interval of a number, with its unit, for checks and messages.
+struct Range {
+  double lo, hi;
+  bool lo_open, hi_open;
+  const char* unit;
+  bool contains(double v) const {
+    return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  std::string text() const {
+    std::ostringstream os;
+    os.precision(6);
+    if (lo == -kInf && hi == kInf) os << "a finite number";
+    else if (hi == kInf) os << (lo_open ? "> " : ">= ") << lo;
+    else os << "in " << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
+    if (*unit) os << " " << unit;
+    return os.str();
+  }
+};
+Range positive(const char* unit) { return {0, kInf, true, false, unit}; }
+Range non_negative(const char* unit) { return {0, kInf, false, false, unit}; }
+Range any(const char* unit) { return {-kInf, kInf, false, false, unit}; }
+
+// One TOML table being read. Keys not in `keys` are errors, found before any value is read (a
+// misspelt key must not leave a default in place, nor surface as "missing" under its real name).
+class Fields {
+ public:
+  Fields(const toml::table& t, std::string label, std::string file, const std::vector<std::string>& keys = {})
+      : t_(t), label_(std::move(label)), file_(std::move(file)) {
+    if (keys.empty()) return;
+    for (const auto& [k, v] : t_) {
+      if (std::find(keys.begin(), keys.end(), std::string(k.str())) != keys.end()) continue;
+      std::string allowed;
+      for (const auto& u : keys) allowed += (allowed.empty() ? "" : ", ") + u;
+      throw SceneError(where(v.source(), file_) + ": " + label_ + ": unknown key '" + std::string(k.str()) +
+                       "'; allowed: " + allowed);
+    }
+  }
+
+  [[noreturn]] void fail(const toml::node& n, const std::string& key, const std::string& allowed) const {
+    throw SceneError(where(n.source(), file_) + ": " + label_ + ": key '" + key + "' = " + shown(n) + ": " + allowed);
+  }
+  [[noreturn]] void missing(const std::string& key, const std::string& allowed) const {
+    throw SceneError(where(t_.source(), file_) + ": " + label_ + ": missing key '" + key + "' (" + allowed + ")");
+  }
+  const toml::node* get(const std::string& key) const { return t_.get(key); }
+  bool has(const std::string& key) const { return t_.contains(key); }
+
+  double number(const std::string& key, const Range& r) {
+    const toml::node* n = get(key);
+    if (!n) missing(key, "a number " + r.text());
+    return checked(*n, key, r);
+  }
+  double number_or(const std::string& key, double fallback, const Range& r) {
+    const toml::node* n = get(key);
+    return n ? checked(*n, key, r) : fallback;
+  }
+  long integer(const std::string& key, long lo, long hi) {
+    const toml::node* n = get(key);
+    const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!n) missing(key, allowed);
+    return integer_of(*n, key, lo, hi, allowed);
+  }
+  long integer_or(const std::string& key, long fallback, long lo, long hi) {
+    const toml::node* n = get(key);
+    return n ? integer_of(*n, key, lo, hi, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]")
+             : fallback;
+  }
+  bool boolean_or(const std::string& key, bool fallback) {
+    const toml::node* n = get(key);
+    if (!n) return fallback;
+    if (!n->is_boolean()) fail(*n, key, "true or false");
+    return n->as_boolean()->get();
+  }
+  std::string string(const std::string& key, const std::string& allowed) {
+    const toml::node* n = get(key);
+    if (!n) missing(key, allowed);
+    if (!n->is_string() || n->as_string()->get().empty()) fail(*n, key, allowed);
+    return n->as_string()->get();
+  }
+  std::string string_or(const std::string& key, const std::string& fallback, const std::string& allowed) {
+    return has(key) ? string(key, allowed) : fallback;
+  }
+  // One of `choices` (strings), as its index.
+  int choice(const std::string& key, const std::vector<std::string>& choices, int fallback) {
+    const toml::node* n = get(key);
+    if (!n) return fallback;
+    std::string allowed = "one of";
+    for (const auto& c : choices) allowed += " \"" + c + "\"";
+    if (!n->is_string()) fail(*n, key, allowed);
+    const auto it = std::find(choices.begin(), choices.end(), n->as_string()->get());
+    if (it == choices.end()) fail(*n, key, allowed);
+    return static_cast<int>(it - choices.begin());
+  }
+  Vec3<double> vec3(const std::string& key, const Range& r) {
+    const toml::node* n = get(key);
+    if (!n) missing(key, "[x, y, z], each " + r.text());
+    return vec3_of(*n, key, r);
+  }
+  Vec3<double> vec3_or(const std::string& key, Vec3<double> fallback, const Range& r) {
+    const toml::node* n = get(key);
+    return n ? vec3_of(*n, key, r) : fallback;
+  }
+  std::vector<Vec3<double>> vec3_list(const std::string& key, const Range& r, std::size_t min_size, std::size_t max_size) {
+    const toml::node* n = get(key);
+    const std::string allowed = "a list of " + std::to_string(min_size) + " to " + std::to_string(max_size) +
+                                " points [[x, y, z], ...], each " + r.text();
+    if (!n) missing(key, allowed);
+    const toml::array* a = n->as_array();
+    if (!a || a->size() < min_size || a->size() > max_size) fail(*n, key, allowed);
+    std::vector<Vec3<double>> out;
+    for (const auto& e : *a) out.push_back(vec3_of(e, key, r));
+    return out;
+  }
+
+  const std::string& label() const { return label_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  double checked(const toml::node& n, const std::string& key, const Range& r) const {
+    double v;
+    if (n.is_floating_point()) v = n.as_floating_point()->get();
+    else if (n.is_integer()) v = static_cast<double>(n.as_integer()->get());
+    else fail(n, key, "a number " + r.text());
+    if (!r.contains(v)) fail(n, key, "must be " + r.text());
+    return v;
+  }
+  long integer_of(const toml::node& n, const std::string& key, long lo, long hi, const std::string& allowed) const {
+    if (!n.is_integer()) fail(n, key, allowed);
+    const std::int64_t v = n.as_integer()->get();
+    if (v < lo || v > hi) fail(n, key, allowed);
+    return static_cast<long>(v);
+  }
+  Vec3<double> vec3_of(const toml::node& n, const std::string& key, const Range& r) const {
+    const std::string allowed = "[x, y, z], each " + r.text();
+    const toml::array* a = n.as_array();
+    if (!a || a->size() != 3) fail(n, key, allowed);
+    double c[3];
+    for (int k = 0; k < 3; ++k) {
+      const toml::node& e = *a->get(static_cast<std::size_t>(k));
+      if (e.is_floating_point()) c[k] = e.as_floating_point()->get();
+      else if (e.is_integer()) c[k] = static_cast<double>(e.as_integer()->get());
+      else fail(n, key, allowed);
+      if (!r.contains(c[k])) fail(n, key, allowed);
+    }
+    return {c[0], c[1], c[2]};
+  }
+
+  const toml::table& t_;
+  std::string label_, file_;
+};
+
+// ---- command-line overrides -----------------------------------------------------------------
+
+// Splits "material[1].density" into {"material", "1", "density"}.
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> parts;
+  std::string cur;
+  for (char c : path) {
+    if (c == '.' || c == '[' || c == ']') {
+      if (!cur.empty()) parts.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) parts.push_back(cur);
+  return parts;
+}
+
+void apply_override(toml::table& root, const std::string& arg) {
+  const auto eq = arg.find('=');
+  const std::string usage = "--set " + arg + ": expected key=value, for example --set simulation.dt=1e-5";
+  if (eq == std::string::npos || eq == 0 || eq + 1 == arg.size()) throw SceneError(usage);
+  const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
+  std::vector<std::string> parts = split_path(key);
+  if (parts.empty()) throw SceneError(usage);
+  if (parts.size() == 1) {  // bare key: [simulation] or [output]
+    const bool in_output = root["output"][parts[0]] && !root["simulation"][parts[0]];
+    parts.insert(parts.begin(), in_output ? "output" : "simulation");
+  }
+  // The value as TOML; a bare word (precision=float) is taken as a string.
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text, "--set " + arg);
+  } catch (const toml::parse_error&) {
+    try {
+      parsed = toml::parse("v = \"" + text + "\"", "--set " + arg);
+    } catch (const toml::parse_error& e) {
+      throw SceneError("command line --set " + arg + ": the value is not TOML: " + std::string(e.description()));
+    }
+  }
+  toml::table* t = &root;
+  // Keys that stand for one another: setting one on the command line drops the other.
+  static const std::map<std::string, std::string> alternative = {
+      {"dt", "steps_per_contact"}, {"steps_per_contact", "dt"}, {"stiffness", "contact_time"},
+      {"contact_time", "stiffness"}, {"radius", "shape"}, {"shape", "radius"}};
+  for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
+    toml::node* next = t->get(parts[k]);
+    if (next && next->is_array()) {  // array of tables: the next part is an index
+      toml::array* a = next->as_array();
+      if (k + 2 >= parts.size()) throw SceneError("command line --set " + arg + ": '" + parts[k] + "' needs an index, as " + parts[k] + "[0].key");
+      char* end = nullptr;
+      const long i = std::strtol(parts[k + 1].c_str(), &end, 10);
+      if (*end || i < 0 || static_cast<std::size_t>(i) >= a->size() || !a->get(static_cast<std::size_t>(i))->is_table())
+        throw SceneError("command line --set " + arg + ": index '" + parts[k + 1] + "' of '" + parts[k] + "' must be 0.." +
+                         std::to_string(static_cast<long>(a->size()) - 1));
+      t = a->get(static_cast<std::size_t>(i))->as_table();
+      ++k;
+      continue;
+    }
+    if (!next) next = &t->insert_or_assign(parts[k], toml::table{}).first->second;
+    if (!next->is_table()) throw SceneError("command line --set " + arg + ": '" + parts[k] + "' is not a table");
+    t = next->as_table();
+  }
+  parsed.get("v")->visit([&](const auto& v) { t->insert_or_assign(parts.back(), v); });
+  const auto alt = alternative.find(parts.back());
+  if (alt != alternative.end()) {
+    t->erase(alt->second);
+    if (alt->first == "radius") t->erase("bounding_radius");
+  }
+}
+
+// ---- the scene's tables -----------------------------------------------------------------------
+
+// Array of tables [[name]] (absent: empty); a plain table given instead is an error.
+std::vector<const toml::table*> tables(const toml::table& root, const std::string& name, const std::string& file) {
+  std::vector<const toml::table*> out;
+  const toml::node* n = root.get(name);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a || !a->is_array_of_tables())
+    throw SceneError(where(n->source(), file) + ": '" + name + "' must be an array of tables, written [[" + name + "]]");
+  for (const auto& e : *a) out.push_back(e.as_table());
+  return out;
+}
+
+const toml::table& table(const toml::table& root, const std::string& name, const std::string& file) {
+  static const toml::table empty;
+  const toml::node* n = root.get(name);
+  if (!n) return empty;
+  if (!n->is_table()) throw SceneError(where(n->source(), file) + ": '" + name + "' must be a table, written [" + name + "]");
+  return *n->as_table();
+}
+
+std::string item_label(const std::string& name, std::size_t k) { return "[[" + name + "]] #" + std::to_string(k + 1); }
+
+// Index of the named item in `names`, or an error naming the choices.
+int lookup(Fields& f, const std::string& key, const std::vector<std::string>& names, const char* kind) {
+  const std::string allowed_head = std::string("the name of a [[") + kind + "]]";
+  const toml::node* n = f.get(key);
+  std::string allowed = allowed_head + ":";
+  for (const auto& s : names) allowed += " \"" + s + "\"";
+  if (names.empty()) allowed = allowed_head + " (none is defined)";
+  if (!n) f.missing(key, allowed);
+  if (!n->is_string()) f.fail(*n, key, allowed);
+  const auto it = std::find(names.begin(), names.end(), n->as_string()->get());
+  if (it == names.end()) f.fail(*n, key, allowed);
+  return static_cast<int>(it - names.begin());
+}
+
+void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
+  Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
+                                        "domain_lo", "domain_hi", "skin", "force_dt", "max_impact_speed", "seed"});
+  s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
+  s.precision = static_cast<PrecisionKind>(f.choice("precision", {"float", "double"}, 1));
+  s.backend = static_cast<BackendKind>(f.choice("backend", {"auto", "cpu", "gpu"}, 0));
+  if (f.has("dt") == f.has("steps_per_contact")) {
+    const char* both = "give exactly one of 'dt' (s, > 0) and 'steps_per_contact' (dt = t_c / steps_per_contact, >= 5)";
+    if (f.has("dt")) f.fail(*f.get("dt"), "dt", both);
+    f.missing("dt", both);
+  }
+  s.dt = f.number_or("dt", 0, positive("s"));
+  s.steps_per_contact = f.number_or("steps_per_contact", 0, {5, 1e6, false, false, "steps per contact time"});
+  s.end_time = f.number("end_time", positive("s"));
+  s.gravity = f.vec3_or("gravity", {0, -9.81, 0}, any("m/s^2"));
+  s.drag = f.number_or("drag", 0, non_negative("kg/m"));
+  s.domain_lo = f.vec3("domain_lo", any("m"));
+  s.domain_hi = f.vec3("domain_hi", any("m"));
+  if (!(s.domain_hi.x > s.domain_lo.x && s.domain_hi.y > s.domain_lo.y && s.domain_hi.z > s.domain_lo.z))
+    f.fail(*f.get("domain_hi"), "domain_hi", "must exceed domain_lo in x, y and z");
+  s.skin = f.number_or("skin", 0.2, {0, 10, false, false, "x largest bounding radius"});
+  s.force_dt = f.boolean_or("force_dt", false);
+  s.max_impact_speed = f.number_or("max_impact_speed", 0, non_negative("m/s"));
+  s.seed = static_cast<std::uint64_t>(f.integer_or("seed", 1, 0, std::numeric_limits<long>::max()));
+}
+
+void read_output(const toml::table& t, const std::string& file, Scene& s) {
+  Fields f(t, "[output]", file, {"directory", "csv_interval", "vtu_interval", "penetration_warning"});
+  s.output.directory = f.string_or("directory", "data/run", "a directory path (created if missing)");
+  s.output.csv_interval = f.number_or("csv_interval", 0, non_negative("s (0: no CSV)"));
+  s.output.vtu_interval = f.number_or("vtu_interval", 0, non_negative("s (0: no VTU frames)"));
+  s.output.penetration_warning = f.number_or("penetration_warning", 0.05, {0, 1, true, false, "overlap / radius"});
+}
+
+void read_materials(const toml::table& root, const std::string& file, Scene& s) {
+  const auto items = tables(root, "material", file);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Fields f(*items[k], item_label("material", k), file, {"name", "density", "youngs_modulus", "poisson_ratio"});
+    MaterialSpec m;
+    m.name = f.string("name", "a non-empty name");
+    for (const auto& o : s.materials)
+      if (o.name == m.name) f.fail(*f.get("name"), "name", "must be unique among [[material]]");
+    m.density = f.number("density", positive("kg/m^3"));
+    if (s.law == LawKind::hertz) {
+      m.youngs_modulus = f.number("youngs_modulus", positive("Pa"));
+      m.poisson_ratio = f.number("poisson_ratio", {-1, 0.5, true, true, "(Poisson ratio)"});
+    } else {
+      m.youngs_modulus = f.number_or("youngs_modulus", 0, positive("Pa"));
+      m.poisson_ratio = f.number_or("poisson_ratio", 0, {-1, 0.5, true, true, "(Poisson ratio)"});
+    }
+    s.materials.push_back(m);
+  }
+  if (s.materials.size() > 8) throw SceneError(file + ": at most 8 [[material]] (the contact-law table's size)");
+  if (s.materials.empty()) throw SceneError(file + ": no [[material]]: at least one is needed");
+}
+
+std::vector<std::string> material_names(const Scene& s) {
+  std::vector<std::string> n;
+  for (const auto& m : s.materials) n.push_back(m.name);
+  return n;
+}
+
+void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
+  const auto items = tables(root, "pair", file);
+  const auto names = material_names(s);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    // Hertz takes its stiffness from the materials' youngs_modulus and poisson_ratio.
+    const std::vector<std::string> keys =
+        s.law == LawKind::linear
+            ? std::vector<std::string>{"materials", "stiffness", "contact_time", "restitution", "friction", "tangential_damping", "no_tension"}
+            : std::vector<std::string>{"materials", "restitution", "friction", "tangential_damping", "no_tension"};
+    Fields f(*items[k], item_label("pair", k), file, keys);
+    PairSpec p;
+    const toml::node* mats = f.get("materials");
+    const std::string allowed = "two material names, [\"a\", \"b\"]";
+    if (!mats) f.missing("materials", allowed);
+    const toml::array* a = mats->as_array();
+    if (!a || a->size() != 2 || !a->get(0)->is_string() || !a->get(1)->is_string()) f.fail(*mats, "materials", allowed);
+    int idx[2];
+    for (int j = 0; j < 2; ++j) {
+      const auto it = std::find(names.begin(), names.end(), a->get(static_cast<std::size_t>(j))->as_string()->get());
+      if (it == names.end()) f.fail(*mats, "materials", "names of [[material]] items");
+      idx[j] = static_cast<int>(it - names.begin());
+    }
+    p.a = idx[0], p.b = idx[1];
+    if (s.pair(p.a, p.b)) f.fail(*mats, "materials", "each pair once");
+    if (s.law == LawKind::linear) {
+      if (f.has("stiffness") == f.has("contact_time")) {
+        const char* one = "give exactly one of 'stiffness' (N/m) and 'contact_time' (s)";
+        if (f.has("stiffness")) f.fail(*f.get("stiffness"), "stiffness", one);
+        f.missing("stiffness", one);
+      }
+      p.stiffness = f.number_or("stiffness", 0, positive("N/m"));
+      p.contact_time = f.number_or("contact_time", 0, positive("s"));
+    }
+    p.restitution = f.number("restitution", {0, 1, true, false, "(coefficient of restitution)"});
+    p.friction = f.number_or("friction", 0, {0, 100, false, false, "(Coulomb coefficient)"});
+    p.tangential_damping = f.number_or("tangential_damping", 0, non_negative("kg/s (K_T of eq. 2.3)"));
+    p.no_tension = f.boolean_or("no_tension", s.law == LawKind::hertz);
+    s.pairs.push_back(p);
+  }
+}
+
+void read_types(const toml::table& root, const std::string& file, Scene& s) {
+  const auto items = tables(root, "particle_type", file);
+  const auto materials = material_names(s);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Fields f(*items[k], item_label("particle_type", k), file, {"name", "material", "radius", "shape", "bounding_radius"});
+    ParticleTypeSpec t;
+    t.name = f.string("name", "a non-empty name");
+    for (const auto& o : s.types)
+      if (o.name == t.name) f.fail(*f.get("name"), "name", "must be unique among [[particle_type]]");
+    t.material = lookup(f, "material", materials, "material");
+    if (f.has("radius") == f.has("shape")) {
+      const char* one = "give 'radius' (m, a sphere) or 'shape' (a .shape/.obj file) with 'bounding_radius' (m)";
+      if (f.has("radius")) f.fail(*f.get("radius"), "radius", one);
+      f.missing("radius", one);
+    }
+    if (f.has("radius")) {
+      t.radius = f.number("radius", positive("m"));
+      t.volume = 4.0 / 3.0 * 3.14159265358979323846 * t.radius * t.radius * t.radius;
+    } else {
+      t.shape = f.string("shape", "a path to a .shape or .obj file");
+      t.bounding_radius = f.number("bounding_radius", positive("m"));
+      try {
+        t.volume = load_scaled_shape(t.shape, t.bounding_radius).volume;
+      } catch (const std::exception& e) {
+        f.fail(*f.get("shape"), "shape", std::string("cannot be loaded: ") + e.what());
+      }
+    }
+    s.types.push_back(t);
+  }
+  if (s.types.empty()) throw SceneError(file + ": no [[particle_type]]: at least one is needed");
+  if (!s.all_spheres() && s.types.size() > 4)
+    throw SceneError(file + ": at most 4 [[particle_type]] when any is a polyhedron (the shape table's size)");
+}
+
+std::vector<std::string> type_names(const Scene& s) {
+  std::vector<std::string> n;
+  for (const auto& t : s.types) n.push_back(t.name);
+  return n;
+}
+
+bool inside_domain(const Scene& s, const Vec3<double>& x, double r) {
+  return x.x - r >= s.domain_lo.x && x.x + r <= s.domain_hi.x && x.y - r >= s.domain_lo.y && x.y + r <= s.domain_hi.y &&
+         x.z - r >= s.domain_lo.z && x.z + r <= s.domain_hi.z;
+}
+
+long read_placements(const toml::table& root, const std::string& file, Scene& s) {
+  const auto types = type_names(s);
+  long total = 0;
+  const auto items = tables(root, "lattice", file);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Fields f(*items[k], item_label("lattice", k), file,
+             {"type", "origin", "count", "spacing", "velocity", "jitter", "random_orientation"});
+    LatticeSpec l;
+    l.type = lookup(f, "type", types, "particle_type");
+    const double r = s.types[static_cast<std::size_t>(l.type)].size();
+    l.origin = f.vec3("origin", any("m"));
+    const toml::node* c = f.get("count");
+    const std::string allowed = "[nx, ny, nz], integers >= 1";
+    if (!c) f.missing("count", allowed);
+    const toml::array* a = c->as_array();
+    if (!a || a->size() != 3) f.fail(*c, "count", allowed);
+    double sites = 1;
+    for (int j = 0; j < 3; ++j) {
+      const toml::node* e = a->get(static_cast<std::size_t>(j));
+      if (!e->is_integer() || e->as_integer()->get() < 1 || e->as_integer()->get() > kMaxParticles) f.fail(*c, "count", allowed);
+      l.count[static_cast<std::size_t>(j)] = static_cast<long>(e->as_integer()->get());
+      sites *= static_cast<double>(l.count[static_cast<std::size_t>(j)]);
+    }
+    if (sites > static_cast<double>(kMaxParticles)) f.fail(*c, "count", "at most 2^31 sites");
+    l.spacing = f.number("spacing", {2 * r, kInf, false, false, "m (at least 2 bounding radii: no overlap)"});
+    l.velocity = f.vec3_or("velocity", {0, 0, 0}, any("m/s"));
+    l.jitter = f.number_or("jitter", 0, {0, 1, false, false, "x the free gap between neighbours"});
+    l.random_orientation = f.boolean_or("random_orientation", true);
+    const Vec3<double> last = l.origin + Vec3<double>{double(l.count[0] - 1), double(l.count[1] - 1), double(l.count[2] - 1)} * l.spacing;
+    if (!inside_domain(s, l.origin, r) || !inside_domain(s, last, r))
+      f.fail(*f.get("origin"), "origin", "the lattice (origin + (count - 1) spacing, plus the radius) must lie inside the domain");
+    total += static_cast<long>(sites);
+    s.lattices.push_back(l);
+  }
+  const auto lists = tables(root, "particles", file);
+  for (std::size_t k = 0; k < lists.size(); ++k) {
+    Fields f(*lists[k], item_label("particles", k), file, {"type", "positions", "velocities"});
+    ListSpec l;
+    l.type = lookup(f, "type", types, "particle_type");
+    const double r = s.types[static_cast<std::size_t>(l.type)].size();
+    l.position = f.vec3_list("positions", any("m"), 1, 1000000);
+    if (f.has("velocities")) {
+      l.velocity = f.vec3_list("velocities", any("m/s"), l.position.size(), l.position.size());
+    }
+    for (std::size_t i = 0; i < l.position.size(); ++i)
+      if (!inside_domain(s, l.position[i], r))
+        f.fail(*f.get("positions"), "positions", "point " + std::to_string(i) + " (and its radius) must lie inside the domain");
+    total += static_cast<long>(l.position.size());
+    s.lists.push_back(l);
+  }
+  const auto fills = tables(root, "fill", file);
+  for (std::size_t k = 0; k < fills.size(); ++k) {
+    Fields f(*fills[k], item_label("fill", k), file, {"type", "lo", "hi", "count", "velocity"});
+    FillSpec l;
+    l.type = lookup(f, "type", types, "particle_type");
+    const double r = s.types[static_cast<std::size_t>(l.type)].size();
+    l.lo = f.vec3("lo", any("m"));
+    l.hi = f.vec3("hi", any("m"));
+    const Vec3<double> span = l.hi - l.lo;
+    if (!(span.x > 2 * r && span.y > 2 * r && span.z > 2 * r)) f.fail(*f.get("hi"), "hi", "the box must exceed lo by more than a diameter in x, y and z");
+    if (!inside_domain(s, l.lo, 0) || !inside_domain(s, l.hi, 0)) f.fail(*f.get("hi"), "hi", "the box must lie inside the domain");
+    l.count = f.integer("count", 1, kMaxParticles);
+    // Random sequential placement jams near a solid fraction of 0.38 (spheres); stay well below.
+    const double fraction = static_cast<double>(l.count) * 4.0 / 3.0 * 3.14159265358979 * r * r * r / (span.x * span.y * span.z);
+    if (fraction > 0.3)
+      f.fail(*f.get("count"), "count", "fills " + std::to_string(fraction) + " of the box by bounding volume; random placement jams "
+             "near 0.38, so at most 0.3 is allowed (use a larger box or a [[lattice]])");
+    l.velocity = f.vec3_or("velocity", {0, 0, 0}, any("m/s"));
+    total += l.count;
+    s.fills.push_back(l);
+  }
+  return total;
+}
+
+void read_world(const toml::table& root, const std::string& file, Scene& s) {
+  const auto materials = material_names(s);
+  const auto walls = tables(root, "wall", file);
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    Fields f(*walls[k], item_label("wall", k), file, {"material", "vertices", "rim"});
+    WallSpec w;
+    w.material = lookup(f, "material", materials, "material");
+    w.vertices = f.vec3_list("vertices", any("m"), 3, PlanarPolygon<double>::kMaxVertices);
+    try {
+      (void)PlanarPolygon<double>::make(w.vertices, 0);
+    } catch (const std::exception& e) {
+      f.fail(*f.get("vertices"), "vertices", std::string("a convex planar polygon: ") + e.what());
+    }
+    if (const toml::node* rim = f.get("rim")) {
+      if (!rim->is_boolean()) f.fail(*rim, "rim", "true (contact on every edge) or false (faces only)");
+      w.rim_edges = rim->as_boolean()->get() ? 0xffffffffu : 0u;
+    }
+    s.walls.push_back(w);
+  }
+  const auto cylinders = tables(root, "cylinder", file);
+  for (std::size_t k = 0; k < cylinders.size(); ++k) {
+    Fields f(*cylinders[k], item_label("cylinder", k), file, {"material", "origin", "axis", "radius", "length"});
+    CylinderSpec c;
+    c.material = lookup(f, "material", materials, "material");
+    c.origin = f.vec3("origin", any("m"));
+    c.axis = f.vec3("axis", any("(direction)"));
+    if (!(norm(c.axis) > 0)) f.fail(*f.get("axis"), "axis", "a non-zero direction");
+    c.radius = f.number("radius", positive("m"));
+    c.length = f.number("length", positive("m"));
+    s.cylinders.push_back(c);
+  }
+}
+
+// Every material that meets another (particle-particle, particle-wall) needs its [[pair]].
+void check_pairs_complete(const toml::table& root, const std::string& file, const Scene& s) {
+  std::set<int> particle_materials, world_materials;
+  for (const auto& t : s.types) particle_materials.insert(t.material);
+  for (const auto& w : s.walls) world_materials.insert(w.material);
+  for (const auto& c : s.cylinders) world_materials.insert(c.material);
+  auto need = [&](int a, int b) {
+    if (!s.pair(a, b))
+      throw SceneError(where(root.source(), file) + ": no [[pair]] for materials \"" + s.materials[static_cast<std::size_t>(a)].name +
+                       "\" and \"" + s.materials[static_cast<std::size_t>(b)].name + "\": add one with materials = [\"" +
+                       s.materials[static_cast<std::size_t>(a)].name + "\", \"" + s.materials[static_cast<std::size_t>(b)].name + "\"]");
+  };
+  for (int a : particle_materials) {
+    for (int b : particle_materials) need(a, b);
+    for (int b : world_materials) need(a, b);
+  }
+}
+
+// dt from steps_per_contact, and dt against the critical step (critical_step.hpp).
+void check_time_step(const toml::table& sim, const std::string& file, Scene& s) {
+  const CriticalStep c = critical_step(s);
+  s.dt_critical = c.dt_critical;
+  s.dt_governing = c.governing;
+  if (s.steps_per_contact > 0) s.dt = c.contact_time / s.steps_per_contact;
+  if (s.dt <= kSafeStepFraction * s.dt_critical || s.force_dt) return;
+  Fields f(sim, "[simulation]", file);
+  std::ostringstream allowed;
+  allowed.precision(4);
+  allowed << "dt = " << s.dt << " s is " << s.dt / s.dt_critical << " of the critical step " << s.dt_critical << " s ("
+          << c.governing << (s.law == LawKind::hertz ? ", impact speed " + std::to_string(c.impact_speed) + " m/s" : "")
+          << "); at most " << kSafeStepFraction << " is safe. Lower it, or set force_dt = true to run anyway";
+  const char* key = s.steps_per_contact > 0 ? "steps_per_contact" : "dt";
+  f.fail(*f.get(key), key, allowed.str());
+}
+
+Scene read(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
+  for (const auto& o : overrides) apply_override(root, o);
+  static const std::set<std::string> known = {"simulation", "output", "material", "pair", "particle_type",
+                                              "lattice", "particles", "fill", "wall", "cylinder"};
+  for (const auto& [k, v] : root)
+    if (!known.count(std::string(k.str()))) {
+      std::string allowed;
+      for (const auto& n : known) allowed += (allowed.empty() ? "" : ", ") + n;
+      throw SceneError(where(v.source(), file) + ": unknown table or key '" + std::string(k.str()) + "'; allowed: " + allowed);
+    }
+  Scene s;
+  s.path = file;
+  if (!root.contains("simulation")) throw SceneError(file + ": no [simulation] table (dt or steps_per_contact, end_time, domain_lo, domain_hi)");
+  read_simulation(table(root, "simulation", file), file, s);
+  read_output(table(root, "output", file), file, s);
+  read_materials(root, file, s);
+  read_pairs(root, file, s);
+  read_types(root, file, s);
+  const long total = read_placements(root, file, s);
+  if (total == 0) throw SceneError(file + ": no particles: add a [[lattice]], [[particles]] or [[fill]]");
+  if (total > kMaxParticles) throw SceneError(file + ": " + std::to_string(total) + " particles; at most 2^31");
+  read_world(root, file, s);
+  check_pairs_complete(root, file, s);
+  check_time_step(table(root, "simulation", file), file, s);
+  return s;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw SceneError(name + ":" + std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+  return read(root, name, overrides);
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path, overrides);
+}
+
+}  // namespace blaze

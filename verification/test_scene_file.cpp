@@ -1,0 +1,366 @@
+// Scene files (issue 5): every rejection names the file, the line, the key, the value given and
+// what is allowed; command-line overrides are validated the same way; the critical time step
+// matches its closed forms; placements give the particles they promise; a seeded mutation fuzz
+// of the parser never crashes and every rejection is a SceneError.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include "blaze/contact/sphere.hpp"
+#include "blaze/scene/scene_build.hpp"
+#include "blaze/scene/scene_file.hpp"
+#include "blaze/sim/simulation.hpp"
+#include "verification/tolerances.hpp"
+
+using namespace blaze;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A small valid scene; the cases below change one line of it.
+const std::string kBase = R"(# test scene
+[simulation]
+law = "linear"
+precision = "double"
+dt = 1e-5
+end_time = 0.01
+gravity = [0, -9.81, 0]
+domain_lo = [-0.1, -0.1, -0.1]
+domain_hi = [0.1, 0.1, 0.1]
+
+[output]
+directory = "/tmp/blaze_scene_test"
+csv_interval = 0.001
+
+[[material]]
+name = "glass"
+density = 2500
+[[material]]
+name = "steel"
+density = 7800
+
+[[pair]]
+materials = ["glass", "glass"]
+stiffness = 2e4
+restitution = 0.5
+friction = 0.3
+[[pair]]
+materials = ["glass", "steel"]
+stiffness = 4e4
+restitution = 0.6
+
+[[particle_type]]
+name = "bead"
+material = "glass"
+radius = 2e-3
+
+[[lattice]]
+type = "bead"
+origin = [-0.05, -0.05, -0.05]
+count = [3, 2, 2]
+spacing = 0.005
+
+[[fill]]
+type = "bead"
+lo = [-0.05, 0.0, -0.05]
+hi = [0.05, 0.05, 0.05]
+count = 40
+
+[[particles]]
+type = "bead"
+positions = [[0.0, 0.08, 0.0]]
+velocities = [[0.0, -1.0, 0.0]]
+
+[[wall]]
+material = "steel"
+vertices = [[-0.09, -0.09, -0.09], [-0.09, -0.09, 0.09], [0.09, -0.09, 0.09], [0.09, -0.09, -0.09]]
+)";
+
+// kBase with the first line that starts with `needle` replaced by `with` (empty: removed).
+std::string edit(const std::string& needle, const std::string& with, std::string base = kBase) {
+  const auto at = base.find("\n" + needle);
+  BOOST_TEST_REQUIRE(at != std::string::npos, "needle not in the base scene: " << needle);
+  const auto end = base.find('\n', at + 1);
+  base.replace(at + 1, end - at - 1, with);
+  return base;
+}
+int line_of(const std::string& text, const std::string& needle) {
+  const auto at = text.find("\n" + needle);
+  return 2 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+template <class F>
+std::string rejection(F f) {
+  try {
+    f();
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// One bad value: the line it is on, and what the message must name.
+struct BadValue {
+  const char* needle;      // the line of kBase to replace
+  const char* with;        // the replacement
+  const char* key_value;   // "key 'k' = v" as the message shows it
+  const char* allowed;     // what is allowed, as the message says it
+};
+
+const BadValue kBadValues[] = {
+    {"radius =", "radius = -2e-3", "key 'radius' = -0.002", "must be > 0 m"},
+    {"radius =", "radius = \"big\"", "key 'radius' = \"big\"", "a number > 0 m"},
+    {"restitution = 0.5", "restitution = 0", "key 'restitution' = 0", "(0, 1]"},
+    {"restitution = 0.5", "restitution = 1.2", "key 'restitution' = 1.2", "(0, 1]"},
+    {"dt =", "dt = 0", "key 'dt' = 0", "must be > 0 s"},
+    {"dt =", "dt = -1e-5", "key 'dt' = -1e-05", "must be > 0 s"},
+    {"dt =", "dt = nan", "key 'dt' = nan", "must be > 0 s"},
+    {"density = 2500", "density = -2500", "key 'density' = -2500", "must be > 0 kg/m^3"},
+    {"density = 2500", "densty = 2500", "unknown key 'densty'", "allowed: name, density, youngs_modulus"},
+    {"law =", "law = \"hooke\"", "key 'law' = \"hooke\"", "one of \"linear\" \"hertz\""},
+    {"friction =", "friction = -0.1", "key 'friction' = -0.1", "in [0, 100]"},
+    {"material = \"glass\"", "material = \"glas\"", "key 'material' = \"glas\"", "the name of a [[material]]: \"glass\" \"steel\""},
+    {"count = [3, 2, 2]", "count = [3, 2.5, 2]", "key 'count' = [3, 2.5, 2]", "[nx, ny, nz], integers >= 1"},
+    {"spacing =", "spacing = 0.003", "key 'spacing' = 0.003", "at least 2 bounding radii"},
+    {"origin =", "origin = [-0.2, 0, 0]", "key 'origin' = [-0.2, 0, 0]", "must lie inside the domain"},
+    {"count = 40", "count = 6000", "key 'count' = 6000", "random placement jams"},
+    {"gravity =", "gravity = [0, -9.81]", "key 'gravity' = [0, -9.81]", "[x, y, z]"},
+    {"end_time =", "end_time = 1e400", "", "TOML syntax error"},
+    {"vertices =", "vertices = [[-0.09, -0.09, -0.09], [-0.09, -0.09, 0.09], [0.09, -0.05, 0.09], [0.09, -0.09, -0.09]]",
+     "key 'vertices'", "off the plane"},
+    {"dt =", "dt = 1e-3", "key 'dt' = 0.001", "of the critical step"},
+};
+
+// A Hertz scene: materials need an elastic modulus and a Poisson ratio.
+std::string hertz_scene() {
+  std::string s = edit("law =", "law = \"hertz\"");
+  s = edit("density = 2500", "density = 2500\nyoungs_modulus = 6.3e10\npoisson_ratio = 0.23", s);
+  s = edit("density = 7800", "density = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3", s);
+  s = edit("stiffness = 2e4", "", s);
+  s = edit("stiffness = 4e4", "", s);
+  return edit("dt =", "dt = 1e-7", s);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(scene_file)
+
+BOOST_AUTO_TEST_CASE(base_scene_is_accepted_as_written) {
+  const Scene s = parse_scene(kBase, "scene.toml");
+  BOOST_TEST(s.dt == 1e-5);
+  BOOST_TEST(s.materials.size() == 2u);
+  BOOST_TEST(s.pairs.size() == 2u);
+  BOOST_TEST(s.pair(1, 0)->stiffness == 4e4);
+  BOOST_TEST(s.types[0].radius == 2e-3);
+  BOOST_TEST(s.lattices[0].count[0] == 3);
+  BOOST_TEST(s.fills[0].count == 40);
+  BOOST_TEST(s.walls[0].vertices.size() == 4u);
+  BOOST_TEST(s.gravity.y == -9.81);
+}
+
+// Every bad value is named with file:line, key, value and what is allowed.
+BOOST_AUTO_TEST_CASE(bad_values_name_file_line_key_value_and_allowed) {
+  for (const BadValue& c : kBadValues) {
+    const std::string text = edit(c.needle, c.with);
+    const std::string msg = rejection([&] { parse_scene(text, "scene.toml"); });
+    BOOST_TEST_CONTEXT("replacing '" << c.needle << "' by '" << c.with << "': " << msg) {
+      BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line_of(text, c.with))));
+      BOOST_TEST(has(msg, c.key_value));
+      BOOST_TEST(has(msg, c.allowed));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(poisson_ratio_outside_its_range_is_rejected) {
+  for (const char* nu : {"0.5", "-1", "0.7"}) {
+    const std::string text = edit("poisson_ratio = 0.23", std::string("poisson_ratio = ") + nu, hertz_scene());
+    const std::string msg = rejection([&] { parse_scene(text, "scene.toml"); });
+    BOOST_TEST_CONTEXT(msg) {
+      BOOST_TEST(has(msg, "key 'poisson_ratio' = " + std::string(nu)));
+      BOOST_TEST(has(msg, "in (-1, 0.5)"));
+    }
+  }
+  BOOST_CHECK_NO_THROW(parse_scene(hertz_scene(), "scene.toml"));
+}
+
+BOOST_AUTO_TEST_CASE(missing_items_and_tables_are_named) {
+  struct Case {
+    std::string text, expected;
+  };
+  const Case cases[] = {
+      {edit("restitution = 0.5", ""), "missing key 'restitution'"},
+      {edit("materials = [\"glass\", \"steel\"]", "materials = [\"steel\", \"steel\"]"), "no [[pair]] for materials \"glass\" and \"steel\""},
+      {edit("[output]", "[outptu]"), "unknown table or key 'outptu'"},
+      {edit("dt =", "steps_per_contact = 20\ndt = 1e-5"), "give exactly one of 'dt'"},
+      {edit("radius =", "shape = \"data/shapes/nothing.shape\"\nbounding_radius = 2e-3"), "cannot be loaded"},
+      {"simulation = 3\n", "'simulation' must be a table"},
+  };
+  for (const auto& c : cases) {
+    const std::string msg = rejection([&] { parse_scene(c.text, "scene.toml"); });
+    BOOST_TEST(has(msg, c.expected), msg << " should contain " << c.expected);
+    BOOST_TEST(has(msg, "scene.toml"), msg);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(dt_above_the_safe_fraction_runs_only_when_forced) {
+  const std::string text = edit("dt =", "dt = 1e-3");
+  BOOST_TEST(has(rejection([&] { parse_scene(text, "scene.toml"); }), "set force_dt = true"));
+  const Scene s = parse_scene(text, "scene.toml", {"force_dt=true"});
+  BOOST_TEST(s.dt == 1e-3);
+  BOOST_TEST(s.dt > kSafeStepFraction * s.dt_critical);
+}
+
+BOOST_AUTO_TEST_CASE(command_line_overrides_are_applied_and_validated) {
+  const Scene s = parse_scene(kBase, "scene.toml",
+                              {"dt=1.5e-5", "material[0].density=2600", "output.csv_interval=0.002", "precision=float"});
+  BOOST_TEST(s.dt == 1.5e-5);
+  BOOST_TEST(s.materials[0].density == 2600);
+  BOOST_TEST(s.output.csv_interval == 0.002);
+  BOOST_TEST((s.precision == PrecisionKind::float32));
+  // dt on the command line replaces steps_per_contact in the file.
+  const Scene t = parse_scene(edit("dt =", "steps_per_contact = 30"), "scene.toml", {"simulation.dt=3e-6"});
+  BOOST_TEST(t.dt == 3e-6);
+  const std::pair<const char*, const char*> bad[] = {
+      {"material[0].density=-1", "command line (--set): [[material]] #1: key 'density' = -1: must be > 0"},
+      {"dt", "expected key=value"},
+      {"material[7].density=1", "index '7' of 'material' must be 0..1"},
+      {"simulation.dtt=1", "unknown key 'dtt'"},
+  };
+  for (const auto& [arg, expected] : bad) {
+    const std::string msg = rejection([&] { parse_scene(kBase, "scene.toml", {arg}); });
+    BOOST_TEST(has(msg, expected), arg << ": " << msg);
+  }
+}
+
+// The thesis's bound dt < 2/sqrt(k/m*) with m* of the lightest pair, and the Hertz bound at the
+// deepest overlap of an impact, against their closed forms.
+BOOST_AUTO_TEST_CASE(critical_step_matches_closed_forms) {
+  const Scene s = parse_scene(kBase, "scene.toml");
+  const double m = 2500 * 4.0 / 3.0 * kPi * 8e-9;
+  // glass-glass: k 2e4, m* = m/2; glass-wall: k 4e4, m* = m. The smaller bound governs.
+  const double expected = std::min(2 / std::sqrt(2e4 / (m / 2)), 2 / std::sqrt(4e4 / m));
+  BOOST_TEST(s.dt_critical == expected, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(has(s.dt_governing, "\"glass\"-\"glass\""));
+
+  const Scene h = parse_scene(hertz_scene(), "scene.toml", {"max_impact_speed=2"});
+  const double e_glass = 6.3e10 / (1 - 0.23 * 0.23), e_steel = 2.1e11 / (1 - 0.09);
+  auto bound = [&](double e_star, double r_eff, double m_eff) {
+    const double kn = 4.0 / 3.0 * e_star * std::sqrt(r_eff), delta = std::pow(5 * m_eff * 4 / (4 * kn), 0.4);
+    return 2 / std::sqrt(1.5 * kn * std::sqrt(delta) / m_eff);
+  };
+  const double pair = bound(e_glass / 2, 1e-3, m / 2), wall = bound(1 / (1 / e_glass + 1 / e_steel), 2e-3, m);
+  const double shear = 6.3e10 / (2 * 1.23), rayleigh = kPi * 2e-3 * std::sqrt(2500 / shear) / (0.1631 * 0.23 + 0.8766);
+  BOOST_TEST(h.dt_critical == std::min({pair, wall, rayleigh}), boost::test_tools::tolerance(1e-12));
+}
+
+// contact_time in a [[pair]] gives that contact time: two elastic beads collide head-on.
+BOOST_AUTO_TEST_CASE(contact_time_sets_the_stiffness_that_gives_it) {
+  const double t_c = 2e-4;
+  std::string text = edit("stiffness = 2e4", "contact_time = 2e-4");
+  text = edit("restitution = 0.5", "restitution = 1", text);
+  text = edit("friction = 0.3", "", text);
+  const Scene s = parse_scene(text, "scene.toml");
+  using Law = LinearLaw<double>;
+  const PairTable<Law> laws = build_laws<Law>(s);
+  ParticleState<double> p;
+  const double gap = 1e-4, v = 0.5;
+  p.add_sphere({-2e-3 - gap, 0, 0}, 2e-3, 2500, 0, {v, 0, 0});
+  p.add_sphere({2e-3 + gap, 0, 0}, 2e-3, 2500, 0, {-v, 0, 0});
+  const double dt = t_c / 2000;
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet> sim({dt, {0, 0, 0}, {-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}, 0},
+                                                                laws, World<double>{}, p);
+  double first = -1, last = -1;
+  for (int k = 0; k < 6000; ++k) {
+    sim.step();
+    const auto st = sim.state();
+    if (st.position[1].x - st.position[0].x < 4e-3) {
+      if (first < 0) first = sim.time();
+      last = sim.time();
+    }
+  }
+  BOOST_TEST(last - first == t_c, boost::test_tools::tolerance(tol::scene_contact_time));
+}
+
+BOOST_AUTO_TEST_CASE(placements_give_the_particles_they_promise) {
+  const Scene s = parse_scene(kBase, "scene.toml");
+  const auto p = build_particles<double>(s, nullptr);
+  BOOST_TEST_REQUIRE(p.size() == 12u + 40u + 1u);
+  // Lattice: x fastest, exact sites (no jitter).
+  BOOST_TEST(p.position[1].x - p.position[0].x == 0.005, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(p.position[3].y - p.position[0].y == 0.005, boost::test_tools::tolerance(1e-12));
+  // Order: lattice (0-11), list (12), fill (13-52). Fill: inside its box; no overlaps anywhere.
+  double worst = 1;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = i + 1; j < p.size(); ++j) worst = std::min(worst, norm(p.position[i] - p.position[j]) / 4e-3);
+    if (i >= 13) {
+      BOOST_TEST((p.position[i].y - 2e-3 >= 0.0 && p.position[i].y + 2e-3 <= 0.05));
+      BOOST_TEST((std::fabs(p.position[i].x) + 2e-3 <= 0.05 && std::fabs(p.position[i].z) + 2e-3 <= 0.05));
+    }
+  }
+  BOOST_TEST(worst >= 1.0);
+  BOOST_TEST(p.velocity[12].y == -1.0);
+  // The seed decides the fill; the same seed gives the same particles.
+  const auto again = build_particles<double>(s, nullptr);
+  const auto other = build_particles<double>(parse_scene(kBase, "scene.toml", {"seed=2"}), nullptr);
+  BOOST_TEST(again.position[30].x == p.position[30].x);
+  BOOST_TEST(other.position[30].x != p.position[30].x);
+  // Two placements that overlap are an error naming both.
+  const std::string overlap = edit("positions =", "positions = [[-0.05, -0.05, -0.05]]");
+  const std::string msg = rejection([&] { build_particles<double>(parse_scene(overlap, "scene.toml"), nullptr); });
+  BOOST_TEST((has(msg, "[[particles]] #1 point 0 overlaps particle 0 of [[lattice]] #1")), msg);
+}
+
+// Seeded mutations of the base scene: each either parses into a valid scene or is rejected with
+// a SceneError that names where; nothing else may escape and nothing may crash.
+BOOST_AUTO_TEST_CASE(mutation_fuzz_never_crashes_and_every_rejection_is_clear) {
+  std::mt19937_64 rng(20261129);
+  const std::string alphabet = "[]{}=\"#.,-+0123456789eEnaifrtux_ \n\t";
+  const char* tokens[] = {"1e308", "-0", "nan", "inf", "-inf", "0", "\"\"", "[]", "[[]]", "{}", "true", "1e-300",
+                          "9223372036854775807", "[1,2]", "\"glass\"", "[[wall]]", "[simulation]"};
+  long accepted = 0, rejected = 0;
+  const auto last = (std::filesystem::temp_directory_path() / "blaze_fuzz_last.toml").string();
+  for (int k = 0; k < tol::scene_fuzz_mutations; ++k) {
+    std::string text = kBase;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % text.size();
+      switch (rng() % 5) {
+        case 0: text.erase(at, 1 + rng() % 12); break;
+        case 1: text.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
+        case 2: text.insert(at, tokens[rng() % (sizeof tokens / sizeof *tokens)]); break;
+        case 3: {  // replace the number that starts nearest after `at`
+          const auto d = text.find_first_of("0123456789", at);
+          if (d != std::string::npos) text.replace(d, 1 + rng() % 3, tokens[rng() % 6]);
+          break;
+        }
+        default: {  // duplicate a line
+          const auto b = text.rfind('\n', at), end = text.find('\n', at);
+          if (b != std::string::npos && end != std::string::npos) text.insert(end, text.substr(b, end - b));
+        }
+      }
+    }
+    std::ofstream(last) << text;  // a crash leaves its input here
+    try {
+      const Scene s = parse_scene(text, "fuzz.toml");
+      ++accepted;
+      BOOST_TEST_REQUIRE((s.dt > 0 && std::isfinite(s.dt) && s.end_time > 0), text);
+      for (const auto& t : s.types) BOOST_TEST_REQUIRE(t.size() > 0, text);
+      for (const auto& p : s.pairs) BOOST_TEST_REQUIRE((p.restitution > 0 && p.restitution <= 1), text);
+    } catch (const SceneError& e) {
+      ++rejected;
+      const std::string msg = e.what();
+      BOOST_TEST_REQUIRE((msg.rfind("fuzz.toml", 0) == 0 || msg.rfind("command line", 0) == 0), msg);
+    } catch (const std::exception& e) {
+      BOOST_FAIL("not a SceneError: " << e.what() << "\nscene:\n" << text);
+    }
+  }
+  BOOST_TEST_MESSAGE("scene fuzz: " << accepted << " accepted, " << rejected << " rejected with a SceneError");
+  BOOST_TEST(rejected > tol::scene_fuzz_mutations / 2);  // the mutations do bite
+  std::filesystem::remove(last);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
