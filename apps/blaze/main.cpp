@@ -39,8 +39,9 @@ const char* kUsage =
     "  --help, -h       this text\n"
     "\n"
     "Writes to [output] directory: timeseries.csv (every csv_interval), particles.pvd with\n"
-    "vtu/particles_NNNN.vtu (every vtu_interval), walls.vtu. Exit status 0 on success, 1 on a\n"
-    "rejected scene or a failed run, 2 on a usage error.\n";
+    "vtu/particles_NNNN.vtu (every vtu_interval; polyhedral scenes also polyhedra.pvd with their\n"
+    "faces), walls.vtu. Exit status 0 on success, 1 on a rejected scene or a failed run, 2 on a\n"
+    "usage error.\n";
 
 struct Options {
   std::string scene;
@@ -101,13 +102,16 @@ class Progress {
 
 template <class Real, class Law, class Shape>
 int run_scene(const Scene& s, const Options& o) {
+  constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
   Shape shape;
   ParticleState<Real> particles;
-  if constexpr (std::is_same_v<Shape, SphereShape>) {
-    particles = build_particles<Real>(s, nullptr);
-  } else {
-    shape.table = build_shape_table<Real>(s);
+  std::vector<ConvexShape> shapes;
+  if constexpr (polyhedra) {
+    shapes = build_shapes(s);
+    shape.table = build_shape_table<Real>(s, shapes);
     particles = build_particles<Real>(s, &shape.table);
+  } else {
+    particles = build_particles<Real>(s, nullptr);
   }
   double r_max = 0;
   for (const auto& t : s.types) r_max = std::max(r_max, t.size());
@@ -123,7 +127,7 @@ int run_scene(const Scene& s, const Options& o) {
   csv << "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,total_J\n";
   csv.precision(10);
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
-  PvdCollection pvd(dir + "/particles.pvd");
+  PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
 
   const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));
   const auto every = [&](double interval) {
@@ -148,6 +152,11 @@ int run_scene(const Scene& s, const Options& o) {
         std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
         write_particles_vtu(dir + "/" + name, st);
         pvd.add(sim.time(), name);
+        if constexpr (polyhedra) {
+          std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", frame - 1);
+          write_polyhedra_vtu(dir + "/" + name, st, shapes);
+          pvd_faces.add(sim.time(), name);
+        }
       }
     }
     if (k == steps) break;

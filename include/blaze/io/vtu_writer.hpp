@@ -1,9 +1,20 @@
-// Minimal VTK XML UnstructuredGrid (.vtu) writer, ASCII, and a .pvd time-series collection.
-// Spheres are points (VTK_VERTEX cells) with radius, velocity, angular velocity, id and material
-// as point data; walls are polygons (VTK_POLYGON). Files are written to a temporary name and
-// renamed, so a reader never sees half a file. (Binary appended output comes with the output issue.)
+// VTK XML UnstructuredGrid (.vtu) files with raw binary appended data, and .pvd time series.
+// Format (VTK file formats, "XML File Formats"): the XML header lists each DataArray with
+// format="appended" and its byte offset into the <AppendedData encoding="raw"> block, which
+// follows a '_' and holds, per array, a UInt64 byte count then the little-endian values. Binary
+// values read back exactly (verification/read_vtu.py checks with meshio and with VTK's reader).
+//
+//   particles  every particle as a point (VTK_VERTEX): radius, velocity, angular_velocity,
+//              orientation (w, x, y, z), mass, id, type, material as point data
+//   polyhedra  every polyhedral particle's faces as VTK_POLYGON cells in world position, with the
+//              particle's id, type and velocity as cell data
+//   world      planar polygons (VTK_POLYGON) and cylinders (VTK_QUAD strips) with material,
+//              object index and kind (0 polygon, 1 cylinder) as cell data
+// Files are written to a temporary name and renamed, so a reader never sees half a file.
 #pragma once
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -12,6 +23,7 @@
 #include <utility>
 #include <vector>
 #include "blaze/particles/particle_state.hpp"
+#include "blaze/shapes/convex_shape.hpp"
 #include "blaze/world/world.hpp"
 
 namespace blaze {
@@ -24,85 +36,214 @@ inline void commit(const std::string& tmp, const std::string& path) {
   if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
 }
 
-inline std::ofstream open(const std::string& tmp) {
-  std::ofstream out(tmp);
-  if (!out) throw std::runtime_error("cannot write " + tmp);
-  out << std::setprecision(9);
-  return out;
-}
-
-template <class T, class F>
-void data_array(std::ofstream& out, const char* type, const char* name, int components, std::size_t n, F value) {
-  out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << components
-      << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i) out << value(i) << '\n';
-  out << "        </DataArray>\n";
-}
-
-template <class Real>
-std::string vec(const Vec3<Real>& v) {
-  std::ostringstream s;
-  s << std::setprecision(9) << v.x << ' ' << v.y << ' ' << v.z;
-  return s.str();
-}
+template <class T> constexpr const char* vtk_type();
+template <> constexpr const char* vtk_type<double>() { return "Float64"; }
+template <> constexpr const char* vtk_type<float>() { return "Float32"; }
+template <> constexpr const char* vtk_type<std::int64_t>() { return "Int64"; }
+template <> constexpr const char* vtk_type<std::int32_t>() { return "Int32"; }
+template <> constexpr const char* vtk_type<std::uint8_t>() { return "UInt8"; }
 
 }  // namespace vtu_detail
 
-template <class Real>
-void write_particles_vtu(const std::string& path, const ParticleState<Real>& s) {
-  using namespace vtu_detail;
-  const std::string tmp = path + ".tmp";
-  {
-    auto out = open(tmp);
-    const std::size_t n = s.size();
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-        << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
-        << "      <Points>\n";
-    data_array<Real>(out, "Float64", "Points", 3, n, [&](std::size_t i) { return vec(s.position[i]); });
-    out << "      </Points>\n      <Cells>\n";
-    data_array<Real>(out, "Int64", "connectivity", 1, n, [](std::size_t i) { return i; });
-    data_array<Real>(out, "Int64", "offsets", 1, n, [](std::size_t i) { return i + 1; });
-    data_array<Real>(out, "UInt8", "types", 1, n, [](std::size_t) { return 1; });  // VTK_VERTEX
-    out << "      </Cells>\n      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
-    data_array<Real>(out, "Float64", "radius", 1, n, [&](std::size_t i) { return s.radius[i]; });
-    data_array<Real>(out, "Float64", "velocity", 3, n, [&](std::size_t i) { return vec(s.velocity[i]); });
-    data_array<Real>(out, "Float64", "angular_velocity", 3, n, [&](std::size_t i) { return vec(s.angular_velocity[i]); });
-    data_array<Real>(out, "Int32", "id", 1, n, [&](std::size_t i) { return s.id[i]; });
-    data_array<Real>(out, "Int32", "material", 1, n, [&](std::size_t i) { return static_cast<int>(s.material[i]); });
-    out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-    if (!out) throw std::runtime_error("write failed: " + tmp);
+// One unstructured grid, assembled in memory and written at once.
+class VtuFile {
+ public:
+  enum CellType : std::uint8_t { kVertex = 1, kPolygon = 7, kQuad = 9 };
+
+  template <class T>
+  void points(const std::vector<T>& xyz) {
+    point_count_ = xyz.size() / 3;
+    points_ = make("Points", 3, xyz);
   }
-  commit(tmp, path);
-}
+  // Cells as VTK stores them: all point indices, the running end of each cell, each cell's type.
+  void cells(const std::vector<std::int64_t>& connectivity, const std::vector<std::int64_t>& offsets,
+             const std::vector<std::uint8_t>& types) {
+    if (offsets.size() != types.size()) throw std::invalid_argument("vtu: offsets and types differ in length");
+    cell_count_ = types.size();
+    cells_ = {make("connectivity", 1, connectivity), make("offsets", 1, offsets), make("types", 1, types)};
+  }
+  template <class T>
+  void point_data(const std::string& name, int components, const std::vector<T>& v) {
+    check(name, components, v.size(), point_count_);
+    point_data_.push_back(make(name, components, v));
+  }
+  template <class T>
+  void cell_data(const std::string& name, int components, const std::vector<T>& v) {
+    check(name, components, v.size(), cell_count_);
+    cell_data_.push_back(make(name, components, v));
+  }
+
+  void write(const std::string& path) const {
+    const std::string tmp = path + ".tmp";
+    {
+      std::ofstream out(tmp, std::ios::binary);
+      if (!out) throw std::runtime_error("cannot write " + tmp);
+      std::uint64_t offset = 0;
+      auto header = [&](const Array& a) {
+        out << "        <DataArray type=\"" << a.type << "\" Name=\"" << a.name << "\" NumberOfComponents=\""
+            << a.components << "\" format=\"appended\" offset=\"" << offset << "\"/>\n";
+        offset += sizeof(std::uint64_t) + a.bytes.size();
+      };
+      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+             "header_type=\"UInt64\">\n  <UnstructuredGrid>\n    <Piece NumberOfPoints=\""
+          << point_count_ << "\" NumberOfCells=\"" << cell_count_ << "\">\n      <Points>\n";
+      header(points_);
+      out << "      </Points>\n      <Cells>\n";
+      for (const auto& a : cells_) header(a);
+      out << "      </Cells>\n      <PointData>\n";
+      for (const auto& a : point_data_) header(a);
+      out << "      </PointData>\n      <CellData>\n";
+      for (const auto& a : cell_data_) header(a);
+      out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";
+      auto block = [&](const Array& a) {
+        const std::uint64_t n = a.bytes.size();
+        out.write(reinterpret_cast<const char*>(&n), sizeof n);
+        out.write(a.bytes.data(), static_cast<std::streamsize>(n));
+      };
+      block(points_);
+      for (const auto& a : cells_) block(a);
+      for (const auto& a : point_data_) block(a);
+      for (const auto& a : cell_data_) block(a);
+      out << "\n  </AppendedData>\n</VTKFile>\n";
+      if (!out) throw std::runtime_error("write failed: " + tmp);
+    }
+    vtu_detail::commit(tmp, path);
+  }
+
+ private:
+  struct Array {
+    std::string name;
+    const char* type;
+    int components;
+    std::vector<char> bytes;
+  };
+  template <class T>
+  static Array make(const std::string& name, int components, const std::vector<T>& v) {
+    Array a{name, vtu_detail::vtk_type<T>(), components, std::vector<char>(v.size() * sizeof(T))};
+    if (!v.empty()) std::memcpy(a.bytes.data(), v.data(), a.bytes.size());
+    return a;
+  }
+  static void check(const std::string& name, int components, std::size_t values, std::size_t count) {
+    if (values != count * static_cast<std::size_t>(components))
+      throw std::invalid_argument("vtu: array " + name + " has " + std::to_string(values) + " values, expected " +
+                                  std::to_string(count) + " x " + std::to_string(components));
+  }
+  std::size_t point_count_ = 0, cell_count_ = 0;
+  Array points_;
+  std::vector<Array> cells_, point_data_, cell_data_;
+};
 
 template <class Real>
-void write_world_vtu(const std::string& path, const World<Real>& w) {
-  using namespace vtu_detail;
-  std::vector<Vec3<Real>> points;
-  std::vector<std::size_t> offsets;
-  std::vector<int> material;
-  for (const auto& p : w.polygons) {
-    for (int k = 0; k < p.vertex_count; ++k) points.push_back(p.vertex[k]);
-    offsets.push_back(points.size());
+void write_particles_vtu(const std::string& path, const ParticleState<Real>& s) {
+  const std::size_t n = s.size();
+  std::vector<Real> x, v, w, q, r(s.radius), m(s.mass);
+  std::vector<std::int64_t> conn(n), offsets(n);
+  std::vector<std::int32_t> id(s.id.begin(), s.id.end());
+  for (std::size_t i = 0; i < n; ++i) {
+    x.insert(x.end(), {s.position[i].x, s.position[i].y, s.position[i].z});
+    v.insert(v.end(), {s.velocity[i].x, s.velocity[i].y, s.velocity[i].z});
+    w.insert(w.end(), {s.angular_velocity[i].x, s.angular_velocity[i].y, s.angular_velocity[i].z});
+    q.insert(q.end(), {s.orientation[i].w, s.orientation[i].x, s.orientation[i].y, s.orientation[i].z});
+    conn[i] = static_cast<std::int64_t>(i);
+    offsets[i] = static_cast<std::int64_t>(i + 1);
+  }
+  VtuFile f;
+  f.points(x);
+  f.cells(conn, offsets, std::vector<std::uint8_t>(n, VtuFile::kVertex));
+  f.point_data("radius", 1, r);
+  f.point_data("velocity", 3, v);
+  f.point_data("angular_velocity", 3, w);
+  f.point_data("orientation", 4, q);
+  f.point_data("mass", 1, m);
+  f.point_data("id", 1, id);
+  f.point_data("type", 1, s.type);
+  f.point_data("material", 1, s.material);
+  f.write(path);
+}
+
+// Faces of the polyhedral particles in world position; shapes[type] is that type's body-frame
+// shape (no vertices: a sphere type, left out).
+template <class Real>
+void write_polyhedra_vtu(const std::string& path, const ParticleState<Real>& s, const std::vector<ConvexShape>& shapes) {
+  std::vector<Real> x, v;
+  std::vector<std::int64_t> conn, offsets;
+  std::vector<std::int32_t> id;
+  std::vector<std::uint8_t> type;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.type[i] >= shapes.size()) throw std::invalid_argument("vtu: particle type without a shape");
+    const ConvexShape& shape = shapes[s.type[i]];
+    if (shape.vertices.empty()) continue;
+    const std::int64_t first = static_cast<std::int64_t>(x.size() / 3);
+    for (const auto& b : shape.vertices) {
+      const Vec3<Real> p = s.position[i] + rotate(s.orientation[i], Vec3<Real>{Real(b.x()), Real(b.y()), Real(b.z())});
+      x.insert(x.end(), {p.x, p.y, p.z});
+    }
+    for (const auto& face : shape.faces) {
+      for (int k : face) conn.push_back(first + k);
+      offsets.push_back(static_cast<std::int64_t>(conn.size()));
+      v.insert(v.end(), {s.velocity[i].x, s.velocity[i].y, s.velocity[i].z});
+      id.push_back(s.id[i]);
+      type.push_back(s.type[i]);
+    }
+  }
+  VtuFile f;
+  f.points(x);
+  f.cells(conn, offsets, std::vector<std::uint8_t>(offsets.size(), VtuFile::kPolygon));
+  f.cell_data("id", 1, id);
+  f.cell_data("type", 1, type);
+  f.cell_data("velocity", 3, v);
+  f.write(path);
+}
+
+// World surfaces; a cylinder becomes `segments` quads around its axis.
+template <class Real>
+void write_world_vtu(const std::string& path, const World<Real>& w, int segments = 64) {
+  std::vector<double> x;
+  std::vector<std::int64_t> conn, offsets;
+  std::vector<std::uint8_t> types, material, kind;
+  std::vector<std::int32_t> object;
+  auto point = [&](const Vec3<double>& p) {
+    x.insert(x.end(), {p.x, p.y, p.z});
+    return static_cast<std::int64_t>(x.size() / 3 - 1);
+  };
+  for (std::size_t k = 0; k < w.polygons.size(); ++k) {
+    const auto& p = w.polygons[k];
+    for (int j = 0; j < p.vertex_count; ++j) conn.push_back(point(vec_cast<double>(p.vertex[j])));
+    offsets.push_back(static_cast<std::int64_t>(conn.size()));
+    types.push_back(VtuFile::kPolygon);
     material.push_back(p.material);
+    object.push_back(static_cast<std::int32_t>(k));
+    kind.push_back(0);
   }
-  const std::string tmp = path + ".tmp";
-  {
-    auto out = open(tmp);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-        << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-        << offsets.size() << "\">\n      <Points>\n";
-    data_array<Real>(out, "Float64", "Points", 3, points.size(), [&](std::size_t i) { return vec(points[i]); });
-    out << "      </Points>\n      <Cells>\n";
-    data_array<Real>(out, "Int64", "connectivity", 1, points.size(), [](std::size_t i) { return i; });
-    data_array<Real>(out, "Int64", "offsets", 1, offsets.size(), [&](std::size_t i) { return offsets[i]; });
-    data_array<Real>(out, "UInt8", "types", 1, offsets.size(), [](std::size_t) { return 7; });  // VTK_POLYGON
-    out << "      </Cells>\n      <CellData Scalars=\"material\">\n";
-    data_array<Real>(out, "Int32", "material", 1, material.size(), [&](std::size_t i) { return material[i]; });
-    out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-    if (!out) throw std::runtime_error("write failed: " + tmp);
+  for (std::size_t k = 0; k < w.cylinders.size(); ++k) {
+    const auto& c = w.cylinders[k];
+    const Vec3<double> o = vec_cast<double>(c.origin), a = vec_cast<double>(c.axis);
+    const Vec3<double> any = std::fabs(a.x) < 0.9 ? Vec3<double>{1, 0, 0} : Vec3<double>{0, 1, 0};
+    const Vec3<double> n = cross(a, any), u = n * (1 / norm(n)), v = cross(a, u);
+    const std::int64_t first = static_cast<std::int64_t>(x.size() / 3);
+    for (int j = 0; j < segments; ++j) {
+      const double phi = 2 * 3.14159265358979323846 * j / segments;
+      const Vec3<double> rim = (u * std::cos(phi) + v * std::sin(phi)) * double(c.radius);
+      point(o + rim);
+      point(o + rim + a * double(c.length));
+    }
+    for (int j = 0; j < segments; ++j) {
+      const std::int64_t p0 = first + 2 * j, p1 = first + 2 * ((j + 1) % segments);
+      conn.insert(conn.end(), {p0, p1, p1 + 1, p0 + 1});
+      offsets.push_back(static_cast<std::int64_t>(conn.size()));
+      types.push_back(VtuFile::kQuad);
+      material.push_back(c.material);
+      object.push_back(static_cast<std::int32_t>(k));
+      kind.push_back(1);
+    }
   }
-  commit(tmp, path);
+  VtuFile f;
+  f.points(x);
+  f.cells(conn, offsets, types);
+  f.cell_data("material", 1, material);
+  f.cell_data("object", 1, object);
+  f.cell_data("kind", 1, kind);
+  f.write(path);
 }
 
 // A ParaView time series: (time, file) entries, rewritten whole after each addition.
@@ -115,10 +256,11 @@ class PvdCollection {
     {
       std::ofstream out(tmp);
       if (!out) throw std::runtime_error("cannot write " + tmp);
-      out << std::setprecision(12)
+      out << std::setprecision(17)
           << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n  <Collection>\n";
       for (const auto& [t, f] : entries_) out << "    <DataSet timestep=\"" << t << "\" file=\"" << f << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
+      if (!out) throw std::runtime_error("write failed: " + tmp);
     }
     vtu_detail::commit(tmp, path_);
   }
