@@ -4,7 +4,8 @@
 // no atomics are needed and the summation order is the same on every backend. Both sides call
 // collide(lower index, higher index) and the higher one flips the normal, so the two see exactly
 // the same geometry (Newton's third law holds to the last bit of the geometry).
-// With Features::statistics each particle also counts its vertex-face and edge-edge contacts.
+// With Features::statistics each particle also counts its vertex-face and edge-edge contacts;
+// with Features::monitor it keeps its deepest overlap / radius (reset by the host).
 #pragma once
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/laws/contact_law.hpp"
@@ -36,6 +37,7 @@ struct ContactForces {
     const int mi = p.material[i];
     Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
     Index vertex_face = 0, edge_edge = 0;
+    Real deepest = 0;
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.index[k * list.stride + i];
@@ -49,6 +51,7 @@ struct ContactForces {
       }
       if (!g.touching) continue;
       if constexpr (Features::statistics) (g.kind == ContactKind::edge_edge ? edge_edge : vertex_face) += 1;
+      if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - bi.x;
       const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
       const Vec3<Real> v_rel = Kinematics::relative(vi, wi, ri, p.velocity.get(j), wj, g.point - bj.x);
@@ -59,6 +62,7 @@ struct ContactForces {
     }
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, t);
+    if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);
     if constexpr (Features::statistics) {
       stats.vertex_face[i] = vertex_face;
       stats.edge_edge[i] = edge_edge;

@@ -24,8 +24,10 @@ struct WorldForces {
     const Real m = Real(1) / p.inv_mass[i];
     const int mi = p.material[i];
     Vec3<Real> f = p.force.get(i), t{0, 0, 0};
+    Real deepest = 0;
     const auto apply = [&](const ContactGeometry<Real>& g, int material) {
       if (!g.touching) return;
+      if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - body.x;
       const Vec3<Real> zero{0, 0, 0};
       const Vec3<Real> v_rel = Kinematics::relative(v, w, ri, zero, zero, zero);
@@ -39,6 +41,7 @@ struct WorldForces {
       apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material);
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
+    if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);
   }
 };
 

@@ -2,9 +2,7 @@
 #pragma once
 #include <random>
 #include "blaze/contact/sphere.hpp"
-#include "blaze/laws/hertz.hpp"
-#include "blaze/laws/history_free_friction.hpp"
-#include "blaze/laws/linear_spring_dashpot.hpp"
+#include "blaze/laws/standard_laws.hpp"
 #include "blaze/sim/energy.hpp"
 #include "blaze/sim/simulation.hpp"
 #include "blaze/scenes/gravity_packing.hpp"
@@ -13,11 +11,6 @@
 namespace blaze::test {
 
 constexpr double kPi = 3.14159265358979323846;
-
-template <class Real>
-using LinearLaw = ContactLaw<Real, LinearSpringDashpot, HistoryFreeFriction>;
-template <class Real>
-using HertzLaw = ContactLaw<Real, Hertz, HistoryFreeFriction>;
 
 template <class Law, class Integrator = VelocityVerlet, class Space = DefaultSpace>
 using SphereSim = Simulation<Space, SphereShape, Law, Integrator>;

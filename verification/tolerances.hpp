@@ -283,6 +283,9 @@ constexpr double contact_kind_sigmas = 4;
 // Contact time measured as the span of steps with overlap at dt = t_c/2000: each end is found to
 // within one step, so the span is within 2 dt = 1e-3 t_c; twice that for safety.
 constexpr double scene_contact_time = 2e-3;
+// A sphere placed at its static overlap mg/k on a floor stays there to rounding (the net force is
+// ~1e-16 m g); its monitored overlap / radius matches mg/(k r) far better than this.
+constexpr double static_overlap_monitor = 1e-9;
 // Mutated scenes in the parser fuzz: the 10^4 (each parse takes ~0.1 ms).
 constexpr int scene_fuzz_mutations = 10000;
 

@@ -17,7 +17,7 @@
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
-#include "blaze/sim/energy.hpp"
+#include "blaze/sim/run_log.hpp"
 #include "blaze/sim/simulation.hpp"
 
 using namespace blaze;
@@ -40,8 +40,9 @@ const char* kUsage =
     "\n"
     "Writes to [output] directory: timeseries.csv (every csv_interval), particles.pvd with\n"
     "vtu/particles_NNNN.vtu (every vtu_interval; polyhedral scenes also polyhedra.pvd with their\n"
-    "faces), walls.vtu. Exit status 0 on success, 1 on a rejected scene or a failed run, 2 on a\n"
-    "usage error.\n";
+    "faces), walls.vtu. A state that turns NaN or Inf stops the run (exit status 3), naming the\n"
+    "step and particle, and leaves the last sampled state in last_good.vtu. Exit status 0 on\n"
+    "success, 1 on a rejected scene or a failed run, 2 on a usage error.\n";
 
 struct Options {
   std::string scene;
@@ -118,14 +119,13 @@ int run_scene(const Scene& s, const Options& o) {
   const SimulationParams<Real> prm{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
                                    vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag)};
   const World<Real> world = build_world<Real>(s);
-  Simulation<DefaultSpace, Shape, Law, VelocityVerlet> sim(prm, build_laws<Law>(s), world, particles, shape);
+  Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures> sim(
+      prm, build_laws<Law>(s), world, particles, shape);
 
   const std::string& dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
-  std::ofstream csv(dir + "/timeseries.csv");
-  if (!csv) throw std::runtime_error("cannot write " + dir + "/timeseries.csv");
-  csv << "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,total_J\n";
-  csv.precision(10);
+  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, prm.gravity, particles.size());
+  ParticleState<Real> last_good = particles;
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
 
@@ -142,11 +142,8 @@ int run_scene(const Scene& s, const Options& o) {
     const bool write_vtu = vtu_every && (k % vtu_every == 0 || k == steps);
     if (write_csv || write_vtu) {
       const auto st = sim.state();
-      if (write_csv) {
-        const Energies e = energies(st, prm.gravity);
-        csv << sim.time() << ',' << st.size() << ',' << sim.removed_count() << ',' << e.translational << ','
-            << e.rotational << ',' << e.potential << ',' << e.total() << '\n';
-      }
+      last_good = st;
+      if (write_csv) log.sample(sim, st);
       if (write_vtu) {
         char name[64];
         std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
@@ -160,14 +157,24 @@ int run_scene(const Scene& s, const Options& o) {
       }
     }
     if (k == steps) break;
-    sim.step();
+    try {
+      sim.step();
+    } catch (const NonFiniteState& e) {
+      progress.update(sim.time(), particle_steps, true);
+      write_particles_vtu(dir + "/last_good.vtu", last_good);
+      std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
+                   "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
+      return 3;
+    }
     particle_steps += static_cast<double>(sim.size());
     progress.update(sim.time(), particle_steps);
   }
   progress.update(sim.time(), particle_steps, true);
-  std::printf("done: %llu steps, %u particles left, %u removed (left the domain)\n",
+  std::printf("done: %llu steps, %u particles left, %u removed (left the domain); deepest penetration %.3g%% of "
+              "the radius, over %.3g%% in %ld samples\n",
               static_cast<unsigned long long>(steps), static_cast<unsigned>(sim.size()),
-              static_cast<unsigned>(sim.removed_count()));
+              static_cast<unsigned>(sim.removed_count()), 100 * log.worst_penetration(), 100 * s.output.penetration_warning,
+              log.samples_over_limit());
   std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)\n", dir.c_str(), dir.c_str(), frame);
   return 0;
 }

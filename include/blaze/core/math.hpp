@@ -23,5 +23,8 @@ template <class T>
 BLAZE_HD constexpr T max_r(T a, T b) { return a < b ? b : a; }
 template <class T>
 BLAZE_HD constexpr T clamp_r(T x, T lo, T hi) { return min_r(max_r(x, lo), hi); }
+// False for NaN and +-Inf (x - x is NaN for both); valid without -ffast-math, which Blaze never uses.
+template <class T>
+BLAZE_HD constexpr bool finite_r(T x) { return (x - x) == T(0); }
 
 }  // namespace blaze

@@ -32,4 +32,12 @@ void for_each(Cuda, Index n, const F& f) {
 }
 #endif
 
+// data[i] = value for i in [0, n): for_each(space, n, Fill<T>{data, value}).
+template <class T>
+struct Fill {
+  T* data;
+  T value;
+  BLAZE_HD void operator()(Index i) const { data[i] = value; }
+};
+
 }  // namespace blaze

@@ -32,11 +32,13 @@ class BroadPhase {
   Index capacity() const { return capacity_; }
   std::uint64_t builds() const { return builds_; }
 
-  bool needs_rebuild(ParticleStore<Real, Space>& store) {
-    if (builds_ == 0) return true;
+  // 0: the neighbour list is valid; 1: it must be rebuilt; 2: some particle's state is not finite.
+  int rebuild_check(ParticleStore<Real, Space>& store) {
     auto p = store.view();
-    const Real h = Real(0.5) * skin_;
-    return reduce_max(Space{}, p.n, NeedsRebuild<Real>{grid_, p.position, field(reference_), h * h}, 0) > 0;
+    const Real h = Real(0.5) * skin_, h2 = builds_ == 0 ? Real(-1) : h * h;
+    const int code = reduce_max(Space{}, p.n,
+                                NeedsRebuild<Real>{grid_, p.position, p.velocity, p.angular_velocity, field(reference_), h2}, 0);
+    return builds_ == 0 && code == 0 ? 1 : code;
   }
 
   Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer) {

@@ -21,6 +21,9 @@ struct ParticleView {
   const std::uint8_t* material;
   const std::uint8_t* type;
   const Index* id;
+  // Deepest overlap / radius of each particle's contacts since the last reset (Features::monitor);
+  // null otherwise.
+  Real* penetration;
 };
 
 template <class T>
@@ -34,7 +37,7 @@ struct Gather {
 template <class Real, class Space>
 class ParticleStore {
  public:
-  void upload(const ParticleState<Real>& s, bool keep_previous_forces) {
+  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
     std::vector<Real> inv_m(n_), inv_i(n_);
@@ -63,6 +66,7 @@ class ParticleStore {
     from_host(material_, s.material);
     from_host(type_, s.type);
     from_host(id_, s.id);
+    from_host(penetration_, std::vector<Real>(monitor ? n_ : 0, Real(0)));
     scratch_real_.resize(n_);
   }
 
@@ -90,12 +94,18 @@ class ParticleStore {
   std::vector<Real> download_inverse_inertia() const { return to_host(inv_inertia_, n_); }
   std::vector<Vec3<Real>> download_force() const { return download_vec3(force_); }
   std::vector<Vec3<Real>> download_torque() const { return download_vec3(torque_); }
+  std::vector<Index> download_id() const { return to_host(id_, n_); }
+  std::vector<Real> download_penetration() const { return to_host(penetration_, penetration_.size() ? n_ : 0); }
+  void reset_penetration() {
+    if (penetration_.size()) for_each(Space{}, n_, Fill<Real>{penetration_.data(), Real(0)});
+  }
 
   ParticleView<Real> view() {
     return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
             field(torque_), field(acceleration_prev_), field(torque_prev_),
             {orientation_[0].data(), orientation_[1].data(), orientation_[2].data(), orientation_[3].data()},
-            radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), type_.data(), id_.data()};
+            radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), type_.data(), id_.data(),
+            penetration_.size() ? penetration_.data() : nullptr};
   }
 
   Index size() const { return n_; }
@@ -115,6 +125,7 @@ class ParticleStore {
     permute_one(material_, scratch_u8_, perm);
     permute_one(type_, scratch_u8_, perm);
     permute_one(id_, scratch_index_, perm);
+    if (penetration_.size()) permute_one(penetration_, scratch_real_, perm);
   }
 
   // Bytes held per particle (for benchmarks).
@@ -123,7 +134,7 @@ class ParticleStore {
     for (const auto* f : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
       for (const auto& c : *f) b += c.size() * sizeof(Real);
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
-    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size()) * sizeof(Real);
+    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size()) * sizeof(Real);
     b += material_.size() + type_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
     return b;
   }
@@ -164,6 +175,7 @@ class ParticleStore {
   Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_, torque_prev_;
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
+  Buffer<Real, Space> penetration_;  // Features::monitor only
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;

@@ -12,20 +12,12 @@
 #include <random>
 #include <unordered_map>
 #include "blaze/contact/polyhedron.hpp"
-#include "blaze/laws/contact_law.hpp"
-#include "blaze/laws/hertz.hpp"
-#include "blaze/laws/history_free_friction.hpp"
-#include "blaze/laws/linear_spring_dashpot.hpp"
+#include "blaze/laws/standard_laws.hpp"
 #include "blaze/scene/critical_step.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "blaze/world/world.hpp"
 
 namespace blaze {
-
-template <class Real>
-using LinearLaw = ContactLaw<Real, LinearSpringDashpot, HistoryFreeFriction>;
-template <class Real>
-using HertzLaw = ContactLaw<Real, Hertz, HistoryFreeFriction>;
 
 // Contact laws for every material pair of the scene.
 template <class Law>

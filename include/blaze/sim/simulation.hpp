@@ -26,6 +26,21 @@ struct SimulationParams {
   Real drag = 0;        // kg/m, quadratic air drag F = -drag |v| v on every particle (0: none)
 };
 
+// A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
+// cannot continue. Names the step and one particle whose state is not finite.
+struct NonFiniteState : std::runtime_error {
+  NonFiniteState(const std::string& what, std::uint64_t step_, Index id_) : std::runtime_error(what), step(step_), id(id_) {}
+  std::uint64_t step;
+  Index id;
+};
+
+// Deepest overlap / radius since the last take_penetration() (Features::monitor).
+struct PenetrationReport {
+  double worst = 0;   // overlap / radius of the deepest contact
+  Index worst_id = -1;
+  long over = 0;      // particles whose deepest contact exceeded the threshold
+};
+
 template <class Space, class Shape, class Law, class Integrator, class Kinematics = ContactPointVelocity,
           class Features = FullFeatures>
 class Simulation {
@@ -39,17 +54,17 @@ class Simulation {
     if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
     if (!(params.drag >= 0)) throw std::invalid_argument("simulation: drag must be >= 0 kg/m");
     check_materials(laws, world, particles);
-    store_.upload(particles, Integrator::keeps_previous_forces);
+    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);
     world_.upload(world);
     initial_count_ = store_.size();
-    refresh_neighbours();
+    refresh_neighbours(0);
     compute_forces();
     for_each(Space{}, store_.size(), integrate<Stage::prime>());
   }
 
   void step() {
     timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::pre_force>()); });
-    refresh_neighbours();
+    refresh_neighbours(steps_ + 1);
     compute_forces();
     timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::post_force>()); });
     ++steps_;
@@ -73,6 +88,20 @@ class Simulation {
     for (Index c : to_host(stats_vertex_face_, store_.size())) vf += c;
     for (Index c : to_host(stats_edge_edge_, store_.size())) ee += c;
     return {vf / 2, ee / 2};
+  }
+  // Deepest overlap / radius per particle since the last call, then reset (Features::monitor).
+  PenetrationReport take_penetration(double threshold) {
+    static_assert(Features::monitor, "penetration needs FeatureSet<..., ..., true>");
+    const auto pen = store_.download_penetration();
+    const auto id = store_.download_id();
+    PenetrationReport r;
+    for (std::size_t k = 0; k < pen.size(); ++k) {
+      const double d = static_cast<double>(pen[k]);
+      if (d > threshold) ++r.over;
+      if (d > r.worst) r.worst = d, r.worst_id = id[k];
+    }
+    store_.reset_penetration();
+    return r;
   }
   const Shape& shape() const { return shape_; }
   std::vector<Vec3<Real>> forces() const { return store_.download_force(); }
@@ -137,13 +166,32 @@ class Simulation {
     return {shape_, store_.view(), params_.dt, {params_.gravity, params_.drag}};
   }
 
-  void refresh_neighbours() {
-    bool stale = false;
-    timer_.time("rebuild-check", [&] { stale = broad_.needs_rebuild(store_); });
-    if (!stale) return;
+  // `step`: the step being taken (0 before the first), for the NaN guard's message.
+  void refresh_neighbours(std::uint64_t step) {
+    int check = 0;
+    timer_.time("rebuild-check", [&] { check = broad_.rebuild_check(store_); });
+    if (check == 2) throw_non_finite(step);
+    if (check == 0) return;
     const auto removed = broad_.rebuild(store_, timer_);
     removed_count_ += removed.count;
     removed_mass_ += removed.mass;
+  }
+
+  [[noreturn]] void throw_non_finite(std::uint64_t step) const {
+    const ParticleState<Real> s = store_.download();
+    auto bad = [](const Vec3<Real>& v) { return !(finite_r(v.x) && finite_r(v.y) && finite_r(v.z)); };
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (bad(s.position[k]) || bad(s.velocity[k]) || bad(s.angular_velocity[k])) {
+        const auto& x = s.position[k];
+        const auto& v = s.velocity[k];
+        throw NonFiniteState("non-finite state at step " + std::to_string(step) + " (t = " +
+                                 std::to_string(static_cast<double>(step) * params_.dt) + " s): particle id " +
+                                 std::to_string(s.id[k]) + ", position (" + std::to_string(x.x) + ", " + std::to_string(x.y) +
+                                 ", " + std::to_string(x.z) + ") m, velocity (" + std::to_string(v.x) + ", " +
+                                 std::to_string(v.y) + ", " + std::to_string(v.z) + ") m/s",
+                             step, s.id[k]);
+      }
+    throw NonFiniteState("non-finite state at step " + std::to_string(step), step, -1);
   }
 
   void compute_forces() {

@@ -1,0 +1,16 @@
+// The two contact laws Blaze ships, as complete ContactLaw types: a normal law (linear
+// spring-dashpot, thesis eq. 2.2; Hertz, eq. 3.6) with history-free friction (eq. 2.3).
+#pragma once
+#include "blaze/laws/contact_law.hpp"
+#include "blaze/laws/hertz.hpp"
+#include "blaze/laws/history_free_friction.hpp"
+#include "blaze/laws/linear_spring_dashpot.hpp"
+
+namespace blaze {
+
+template <class Real>
+using LinearLaw = ContactLaw<Real, LinearSpringDashpot, HistoryFreeFriction>;
+template <class Real>
+using HertzLaw = ContactLaw<Real, Hertz, HistoryFreeFriction>;
+
+}  // namespace blaze
