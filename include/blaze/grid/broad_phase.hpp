@@ -41,7 +41,8 @@ class BroadPhase {
     return builds_ == 0 && code == 0 ? 1 : code;
   }
 
-  Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer) {
+  // with_forces: also move force and torque (a rebuild between steps, for a checkpoint).
+  Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer, bool with_forces = false) {
     const Index n = store.size();
     keys_.resize(std::max<std::size_t>(keys_.size(), n));
     order_.resize(std::max<std::size_t>(order_.size(), n));
@@ -49,7 +50,7 @@ class BroadPhase {
       for_each(Space{}, n, HashParticles<Real>{grid_, store.view().position, keys_.data(), order_.data()});
     });
     timer.time("sort", [&] { sorter_.sort_pairs(keys_.data(), order_.data(), n, end_bit_); });
-    timer.time("reorder", [&] { store.permute(order_.data()); });
+    timer.time("reorder", [&] { store.permute(order_.data(), with_forces); });
     Removed removed;
     timer.time("neighbours", [&] {
       const Index cells = static_cast<Index>(grid_.cell_count()) + 1;

@@ -37,6 +37,7 @@ struct Gather {
 template <class Real, class Space>
 class ParticleStore {
  public:
+  static constexpr std::size_t kRadiusField = 25;  // radius_'s place in Snapshot::reals
   void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
@@ -108,13 +109,46 @@ class ParticleStore {
             penetration_.size() ? penetration_.data() : nullptr};
   }
 
+  // Every array that carries state across steps, raw (inverse mass and inertia as stored, so a
+  // round trip is exact) and in the store's order: what a checkpoint holds for a bitwise restart.
+  // Force and torque are included: some integrators read them before the next evaluation.
+  struct Snapshot {
+    std::vector<std::vector<Real>> reals;  // real_fields() order; empty where a field is unused
+    std::vector<std::uint8_t> material, type;
+    std::vector<Index> id;
+  };
+  Snapshot snapshot() const {
+    Snapshot s;
+    for (const auto* f : const_cast<ParticleStore*>(this)->real_fields()) s.reals.push_back(to_host(*f, f->size() ? n_ : 0));
+    s.material = to_host(material_, n_);
+    s.type = to_host(type_, n_);
+    s.id = to_host(id_, n_);
+    return s;
+  }
+  void restore(const Snapshot& s) {
+    const auto fields = real_fields();
+    if (s.reals.size() != fields.size()) throw std::invalid_argument("particle snapshot: wrong number of fields");
+    n_ = static_cast<Index>(s.id.size());
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      if (!s.reals[k].empty() && s.reals[k].size() != s.id.size())
+        throw std::invalid_argument("particle snapshot: field " + std::to_string(k) + " has the wrong length");
+      from_host(*fields[k], s.reals[k]);
+    }
+    from_host(material_, s.material);
+    from_host(type_, s.type);
+    from_host(id_, s.id);
+    scratch_real_.resize(n_);
+  }
+
   Index size() const { return n_; }
   // Drops the particles [n, size) (they were sorted to the end).
   void truncate(Index n) { n_ = n; }
 
   // Puts particle perm[i] at position i in every field that carries state across steps.
-  // Force and torque are recomputed before they are read, so they are not moved.
-  void permute(const Index* perm) {
+  // Force and torque are recomputed before they are read, so they are moved only on request (a
+  // rebuild between steps, for a checkpoint).
+  void permute(const Index* perm, bool with_forces = false) {
+    if (with_forces) permute3(force_, perm), permute3(torque_, perm);
     for (auto* f : {&position_, &velocity_, &angular_velocity_}) permute3(*f, perm);
     for (auto* f : {&acceleration_prev_, &torque_prev_})
       if ((*f)[0].size()) permute3(*f, perm);
@@ -160,6 +194,15 @@ class ParticleStore {
     std::vector<Vec3<Real>> v(n_);
     for (Index i = 0; i < n_; ++i) v[i] = {x[i], y[i], z[i]};
     return v;
+  }
+  std::vector<Buffer<Real, Space>*> real_fields() {
+    std::vector<Buffer<Real, Space>*> f;
+    for (auto* v : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
+      for (auto& c : *v) f.push_back(&c);
+    for (auto& c : orientation_) f.push_back(&c);
+    for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_}) f.push_back(c);
+    if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
+    return f;
   }
   template <class T>
   void permute_one(Buffer<T, Space>& f, Buffer<T, Space>& scratch, const Index* perm) {

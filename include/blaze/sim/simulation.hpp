@@ -41,6 +41,17 @@ struct PenetrationReport {
   long over = 0;      // particles whose deepest contact exceeded the threshold
 };
 
+// Everything a run needs to continue bit for bit (with the same params, laws, world and shape):
+// the store's raw arrays and the counters. Taken right after a neighbour-list rebuild, so the
+// restarted run rebuilds the same list (Simulation::snapshot()).
+template <class Real>
+struct SimulationSnapshot {
+  typename ParticleStore<Real, Host>::Snapshot store;
+  std::uint64_t steps = 0;
+  Index initial_count = 0, removed_count = 0;
+  double removed_mass = 0;
+};
+
 template <class Space, class Shape, class Law, class Integrator, class Kinematics = ContactPointVelocity,
           class Features = FullFeatures>
 class Simulation {
@@ -49,10 +60,8 @@ class Simulation {
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const ParticleState<Real>& particles, const Shape& shape = Shape{})
-      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, particles), params.skin) {
-    if (!(params.dt > 0)) throw std::invalid_argument("simulation: dt must be > 0 s");
-    if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
-    if (!(params.drag >= 0)) throw std::invalid_argument("simulation: drag must be >= 0 kg/m");
+      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(particles.radius)), params.skin) {
+    check_params(params);
     check_materials(laws, world, particles);
     store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);
     world_.upload(world);
@@ -60,6 +69,42 @@ class Simulation {
     refresh_neighbours(0);
     compute_forces();
     for_each(Space{}, store_.size(), integrate<Stage::prime>());
+  }
+
+  // Continues the run a snapshot() was taken from: same arrays, same neighbour list (rebuilt from
+  // the same positions in the same order: the sort is the identity), no force evaluation and no
+  // priming, so the next step is bit for bit the step the original run took.
+  Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
+             const SimulationSnapshot<Real>& snap, const Shape& shape = Shape{})
+      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(snap.store.reals.at(ParticleStore<Real, Host>::kRadiusField))), params.skin) {
+    check_params(params);
+    ParticleState<Real> materials_only;
+    materials_only.material = snap.store.material;
+    check_materials(laws, world, materials_only);
+    typename ParticleStore<Real, Space>::Snapshot s;
+    s.reals = snap.store.reals, s.material = snap.store.material, s.type = snap.store.type, s.id = snap.store.id;
+    store_.restore(s);
+    world_.upload(world);
+    steps_ = snap.steps;
+    initial_count_ = snap.initial_count;
+    removed_count_ = snap.removed_count;
+    removed_mass_ = snap.removed_mass;
+    refresh_neighbours(steps_);
+  }
+
+  // Rebuilds the neighbour list now (moving force and torque along), then takes the snapshot. The
+  // extra rebuild is part of the run's history: a run that writes checkpoints every T differs in
+  // rounding from one that writes none, and a restart from any of them matches the former exactly.
+  SimulationSnapshot<Real> snapshot() {
+    apply_removal(broad_.rebuild(store_, timer_, true));
+    SimulationSnapshot<Real> out;
+    const auto s = store_.snapshot();
+    out.store.reals = s.reals, out.store.material = s.material, out.store.type = s.type, out.store.id = s.id;
+    out.steps = steps_;
+    out.initial_count = initial_count_;
+    out.removed_count = removed_count_;
+    out.removed_mass = removed_mass_;
+    return out;
   }
 
   void step() {
@@ -85,6 +130,7 @@ class Simulation {
   std::pair<long, long> contact_counts() const {
     static_assert(Features::statistics, "contact counts need FeatureSet<..., true>");
     long vf = 0, ee = 0;
+    if (stats_vertex_face_.size() < static_cast<std::size_t>(store_.size())) return {0, 0};  // no evaluation yet
     for (Index c : to_host(stats_vertex_face_, store_.size())) vf += c;
     for (Index c : to_host(stats_edge_edge_, store_.size())) ee += c;
     return {vf / 2, ee / 2};
@@ -134,9 +180,17 @@ class Simulation {
   std::size_t memory_bytes() const { return store_.bytes() + broad_.bytes(); }
 
  private:
-  static GridSpec<Real> make_grid(const SimulationParams<Real>& prm, const ParticleState<Real>& s) {
-    Real r_max = 0;
-    for (Real r : s.radius) r_max = std::max(r_max, r);
+  static Real max_of(const std::vector<Real>& v) {
+    Real m = 0;
+    for (Real r : v) m = std::max(m, r);
+    return m;
+  }
+  static void check_params(const SimulationParams<Real>& params) {
+    if (!(params.dt > 0)) throw std::invalid_argument("simulation: dt must be > 0 s");
+    if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
+    if (!(params.drag >= 0)) throw std::invalid_argument("simulation: drag must be >= 0 kg/m");
+  }
+  static GridSpec<Real> make_grid(const SimulationParams<Real>& prm, Real r_max) {
     if (!(r_max > 0)) throw std::invalid_argument("simulation: no particles");
     return GridSpec<Real>::make(prm.domain_lo, prm.domain_hi, Real(2) * r_max + prm.skin);
   }
@@ -172,7 +226,10 @@ class Simulation {
     timer_.time("rebuild-check", [&] { check = broad_.rebuild_check(store_); });
     if (check == 2) throw_non_finite(step);
     if (check == 0) return;
-    const auto removed = broad_.rebuild(store_, timer_);
+    apply_removal(broad_.rebuild(store_, timer_));
+  }
+  template <class Removed>
+  void apply_removal(const Removed& removed) {
     removed_count_ += removed.count;
     removed_mass_ += removed.mass;
   }
