@@ -93,7 +93,7 @@ RUN_TESTS = rm -f $(BUILD)/$(1)/verification.tsv; BLAZE_REPORT=$(BUILD)/$(1)/ver
   $(BUILD)/$(1)/blaze_tests --log_level=message --report_level=short --color_output=no $(if $(TESTS),--run_test=$(TESTS))
 ifeq ($(BACKEND),cuda)
 test: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests $(BUILD)/cuda/blaze
 	OMP_NUM_THREADS=$(NPROC) $(call RUN_TESTS,cuda)
 else
 test: deps

@@ -349,10 +349,11 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
 }
 
 void read_output(const toml::table& t, const std::string& file, Scene& s) {
-  Fields f(t, "[output]", file, {"directory", "csv_interval", "vtu_interval", "penetration_warning"});
+  Fields f(t, "[output]", file, {"directory", "csv_interval", "vtu_interval", "checkpoint_interval", "penetration_warning"});
   s.output.directory = f.string_or("directory", "data/run", "a directory path (created if missing)");
   s.output.csv_interval = f.number_or("csv_interval", 0, non_negative("s (0: no CSV)"));
   s.output.vtu_interval = f.number_or("vtu_interval", 0, non_negative("s (0: no VTU frames)"));
+  s.output.checkpoint_interval = f.number_or("checkpoint_interval", 0, non_negative("s (0: no checkpoints)"));
   s.output.penetration_warning = f.number_or("penetration_warning", 0.05, {0, 1, true, false, "overlap / radius"});
 }
 

@@ -14,6 +14,7 @@
 #include <fstream>
 #include "blaze/contact/sphere.hpp"
 #include "blaze/exec/device_info.hpp"
+#include "blaze/io/checkpoint.hpp"
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
@@ -34,18 +35,21 @@ const char* kUsage =
     "  --set KEY=VALUE  override a scene value, for example --set simulation.dt=1e-5,\n"
     "                   --set dt=1e-5 (keys of [simulation] and [output] may drop the table),\n"
     "                   --set material[0].density=2600; repeatable; validated like the file\n"
+    "  --restart FILE   continue the run from a checkpoint written by it (same scene; the time\n"
+    "                   series and frames after the checkpoint's time are replaced)\n"
     "  --quiet          no progress line (it is also off when stderr is not a terminal)\n"
     "  --check          validate the scene, print the critical time step and stop\n"
     "  --help, -h       this text\n"
     "\n"
     "Writes to [output] directory: timeseries.csv (every csv_interval), particles.pvd with\n"
     "vtu/particles_NNNN.vtu (every vtu_interval; polyhedral scenes also polyhedra.pvd with their\n"
-    "faces), walls.vtu. A state that turns NaN or Inf stops the run (exit status 3), naming the\n"
+    "faces), walls.vtu, checkpoint.blz (every checkpoint_interval, atomically). A state that turns\n"
+    "NaN or Inf stops the run (exit status 3), naming the\n"
     "step and particle, and leaves the last sampled state in last_good.vtu. Exit status 0 on\n"
     "success, 1 on a rejected scene or a failed run, 2 on a usage error.\n";
 
 struct Options {
-  std::string scene;
+  std::string scene, restart;
   std::vector<std::string> overrides;
   bool quiet = false, check = false;
 };
@@ -65,6 +69,7 @@ Options parse_args(int argc, char** argv) {
     const std::string a = argv[k];
     if (a == "--set" && k + 1 < argc) o.overrides.push_back(argv[++k]);
     else if (a.rfind("--set=", 0) == 0) o.overrides.push_back(a.substr(6));
+    else if (a == "--restart" && k + 1 < argc) o.restart = argv[++k];
     else if (a == "--quiet") o.quiet = true;
     else if (a == "--check") o.check = true;
     else if (a == "--help" || a == "-h") {
@@ -119,27 +124,52 @@ int run_scene(const Scene& s, const Options& o) {
   const SimulationParams<Real> prm{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
                                    vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag)};
   const World<Real> world = build_world<Real>(s);
-  Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures> sim(
-      prm, build_laws<Law>(s), world, particles, shape);
+  using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+  // The run's identity, checked on restart: a checkpoint continues only the run that wrote it.
+  char identity[160];
+  std::snprintf(identity, sizeof identity, "dt=%.17g law=%s precision=%s shape=%s particles=%zu", s.dt, to_string(s.law),
+                to_string(s.precision), Shape::name, particles.size());
+  Checkpoint<Real> restart;
+  if (!o.restart.empty()) {
+    restart = read_checkpoint<Real>(o.restart);
+    if (restart.text.rfind(identity, 0) != 0)
+      throw CheckpointError(o.restart + ": written by another run (" + restart.text.substr(0, restart.text.find('\n')) +
+                            "), this scene gives " + identity);
+  }
+  Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
+                              : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
 
   const std::string& dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
-  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, prm.gravity, particles.size());
-  ParticleState<Real> last_good = particles;
+  const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
+  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, prm.gravity, particles.size(), resume_at);
+  ParticleState<Real> last_good = o.restart.empty() ? particles : sim.state();
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
+  int frame = 0;
+  if (!o.restart.empty()) {
+    log.resume(restart.text.substr(restart.text.find('\n') + 1), last_good);
+    frame = static_cast<int>(pvd.resume(resume_at));
+    pvd_faces.resume(resume_at);
+    std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
+                static_cast<unsigned long long>(sim.steps()), sim.time());
+  }
 
   const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));
   const auto every = [&](double interval) {
     return interval > 0 ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / s.dt))) : 0;
   };
   const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
+  const std::uint64_t checkpoint_every = every(s.output.checkpoint_interval);
   Progress progress(!o.quiet, s.end_time);
   double particle_steps = 0;
-  int frame = 0;
-  for (std::uint64_t k = 0;; ++k) {
-    const bool write_csv = csv_every && (k % csv_every == 0 || k == steps);
-    const bool write_vtu = vtu_every && (k % vtu_every == 0 || k == steps);
+  const std::uint64_t first = sim.steps();
+  for (std::uint64_t k = first;; ++k) {
+    const bool resumed = k == first && first > 0;  // that sample is in the files already
+    const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
+    const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
+    if (checkpoint_every && k > first && k % checkpoint_every == 0)
+      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), std::string(identity) + "\n" + log.save());
     if (write_csv || write_vtu) {
       const auto st = sim.state();
       last_good = st;

@@ -250,6 +250,19 @@ void write_world_vtu(const std::string& path, const World<Real>& w, int segments
 class PvdCollection {
  public:
   explicit PvdCollection(std::string path) : path_(std::move(path)) {}
+  // A restarted run: the entries of the existing file up to time t (none if there is no file).
+  std::size_t resume(double t) {
+    std::ifstream in(path_);
+    std::string line;
+    while (std::getline(in, line)) {
+      const auto ts = line.find("timestep=\""), fs = line.find("file=\"");
+      if (ts == std::string::npos || fs == std::string::npos) continue;
+      const double time = std::stod(line.substr(ts + 10));
+      const std::string file = line.substr(fs + 6, line.find('"', fs + 6) - fs - 6);
+      if (time <= t) entries_.emplace_back(time, file);
+    }
+    return entries_.size();
+  }
   void add(double time, const std::string& file) {
     entries_.emplace_back(time, file);
     const std::string tmp = path_ + ".tmp";

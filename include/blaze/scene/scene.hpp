@@ -95,6 +95,7 @@ struct OutputSpec {
   std::string directory;          // created if missing
   double csv_interval = 0;        // s between CSV rows (0: none)
   double vtu_interval = 0;        // s between VTU frames (0: none)
+  double checkpoint_interval = 0; // s between checkpoints (0: none)
   double penetration_warning = 0.05;  // overlap / radius reported above this (thesis: 5%)
 };
 

@@ -22,12 +22,39 @@ namespace blaze {
 template <class Real>
 class RunLog {
  public:
-  RunLog(const std::string& path, double penetration_limit, const Vec3<Real>& gravity, std::size_t particles)
-      : out_(path), path_(path), limit_(penetration_limit), gravity_(gravity), energy_(particles, 0), present_(particles, 0) {
+  // keep_until >= 0 (a restarted run): the existing file's rows up to that time stay.
+  RunLog(const std::string& path, double penetration_limit, const Vec3<Real>& gravity, std::size_t particles,
+         double keep_until = -1)
+      : path_(path), limit_(penetration_limit), gravity_(gravity), energy_(particles, 0), present_(particles, 0) {
+    std::string kept = "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,total_J,dissipated_J,"
+                       "contacts_vertex_face,contacts_edge_edge,max_penetration_ratio,penetration_over_limit,"
+                       "worst_penetration_id\n";
+    if (keep_until >= 0) {
+      std::ifstream in(path);
+      std::string line;
+      for (bool header = true; std::getline(in, line); header = false)
+        if (!header && !line.empty() && std::stod(line.substr(0, line.find(','))) <= keep_until) kept += line + "\n";
+    }
+    out_.open(path, std::ios::trunc);
     if (!out_) throw std::runtime_error("cannot write " + path);
-    out_ << "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,total_J,dissipated_J,"
-            "contacts_vertex_face,contacts_edge_edge,max_penetration_ratio,penetration_over_limit,worst_penetration_id\n";
+    out_ << kept;
     out_.precision(10);
+  }
+
+  // A restarted run continues with the energy bookkeeping its checkpoint saved (save()).
+  void resume(const std::string& saved, const ParticleState<Real>& st) {
+    if (std::sscanf(saved.c_str(), "e0=%lf removed_energy=%lf", &e0_, &removed_energy_) != 2)
+      throw std::runtime_error("checkpoint: no energy bookkeeping in its run text");
+    started_ = true;
+    for (std::size_t k = 0; k < st.size(); ++k) {
+      energy_[static_cast<std::size_t>(st.id[k])] = particle_energies(st, k, gravity_).total();
+      present_[static_cast<std::size_t>(st.id[k])] = 1;
+    }
+  }
+  std::string save() const {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "e0=%.17g removed_energy=%.17g", e0_, removed_energy_);
+    return buf;
   }
 
   // One row: the state `st` at time t, the simulation's counters since the last sample.

@@ -1,0 +1,91 @@
+// The blaze program (apps/blaze), run as a user would: --help lists every option, a bad scene or
+// option fails with its exit status and a message naming the place, and a run restarted from its
+// checkpoint rewrites exactly the time series the uninterrupted run wrote.
+#include <boost/test/unit_test.hpp>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// build/<backend>/blaze, beside this test binary (make test builds both).
+std::string blaze_binary() {
+  const auto& argv = boost::unit_test::framework::master_test_suite().argv;
+  return (fs::absolute(argv[0]).parent_path() / "blaze").string();
+}
+
+struct Result {
+  int status;
+  std::string output;
+};
+Result run(const std::string& args) {
+  Result r{-1, ""};
+  FILE* p = popen((blaze_binary() + " " + args + " 2>&1").c_str(), "r");
+  if (!p) return r;
+  char buf[512];
+  while (fgets(buf, sizeof buf, p)) r.output += buf;
+  const int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(blaze_run)
+
+BOOST_AUTO_TEST_CASE(help_lists_every_option) {
+  BOOST_TEST_REQUIRE(fs::exists(blaze_binary()), blaze_binary() << " is missing: make test builds it");
+  const Result r = run("--help");
+  BOOST_TEST(r.status == 0);
+  for (const char* option : {"run SCENE.toml", "--set KEY=VALUE", "--restart FILE", "--quiet", "--check", "--help"})
+    BOOST_TEST(r.output.find(option) != std::string::npos, option);
+  BOOST_TEST(run("run data/scenes/box_fill.toml --frobnicate").status == 2);
+}
+
+BOOST_AUTO_TEST_CASE(rejected_scene_exits_1_naming_the_place) {
+  const Result r = run("run data/scenes/box_fill.toml --check --set pair[0].restitution=0");
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.output.find("[[pair]] #1: key 'restitution' = 0: must be in (0, 1]") != std::string::npos, r.output);
+  const Result missing = run("run no/such/scene.toml");
+  BOOST_TEST(missing.status == 1);
+  BOOST_TEST(missing.output.find("no/such/scene.toml: cannot open scene file") != std::string::npos, missing.output);
+}
+
+// The uninterrupted run writes checkpoints; a copy of its output directory, restarted from its
+// last checkpoint, must end with byte-identical time series and frames.
+BOOST_AUTO_TEST_CASE(restart_rewrites_the_same_time_series) {
+  const fs::path a = fs::temp_directory_path() / "blaze_run_a", b = fs::temp_directory_path() / "blaze_run_b";
+  fs::remove_all(a);
+  fs::remove_all(b);
+  const std::string common = "run data/scenes/box_fill.toml --quiet --set end_time=0.03 --set output.csv_interval=0.001 "
+                             "--set output.vtu_interval=0.01 --set output.checkpoint_interval=0.008 ";
+  const Result first = run(common + "--set output.directory=" + a.string());
+  BOOST_TEST_REQUIRE(first.status == 0, first.output);
+  fs::copy(a, b, fs::copy_options::recursive);
+  const Result again = run(common + "--set output.directory=" + b.string() + " --restart " + (a / "checkpoint.blz").string());
+  BOOST_TEST_REQUIRE(again.status == 0, again.output);
+  BOOST_TEST(again.output.find("restarted from") != std::string::npos);
+  BOOST_TEST(slurp(a / "timeseries.csv") == slurp(b / "timeseries.csv"));
+  BOOST_TEST(slurp(a / "particles.pvd") == slurp(b / "particles.pvd"));
+  BOOST_TEST(slurp(a / "vtu/particles_0003.vtu") == slurp(b / "vtu/particles_0003.vtu"));
+  // A checkpoint of another run is refused.
+  const Result other = run(common + "--set output.directory=" + b.string() + " --set dt=5e-6 --restart " +
+                           (a / "checkpoint.blz").string());
+  BOOST_TEST(other.status == 1);
+  BOOST_TEST(other.output.find("written by another run") != std::string::npos, other.output);
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
