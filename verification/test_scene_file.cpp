@@ -230,9 +230,9 @@ BOOST_AUTO_TEST_CASE(command_line_overrides_are_applied_and_validated) {
       {"material[7].density=1", "index '7' of 'material' must be 0..1"},
       {"simulation.dtt=1", "unknown key 'dtt'"},
   };
-  for (const auto& [arg, expected] : bad) {
-    const std::string msg = rejection([&] { parse_scene(kBase, "scene.toml", {arg}); });
-    BOOST_TEST(has(msg, expected), arg << ": " << msg);
+  for (const auto& c : bad) {
+    const std::string msg = rejection([&] { parse_scene(kBase, "scene.toml", {c.first}); });
+    BOOST_TEST(has(msg, c.second), c.first << ": " << msg);
   }
 }
 
