@@ -53,6 +53,17 @@ BOOST_AUTO_TEST_CASE(help_lists_every_option) {
   BOOST_TEST(run("run data/scenes/box_fill.toml --frobnicate").status == 2);
 }
 
+// README.md's annotated example is the shipped scene itself, and that scene runs.
+BOOST_AUTO_TEST_CASE(readme_example_is_the_shipped_scene) {
+  const std::string readme = slurp("README.md"), scene = slurp("data/scenes/box_fill.toml");
+  const auto start = readme.find("```toml\n");
+  BOOST_TEST_REQUIRE(start != std::string::npos);
+  const auto end = readme.find("```", start + 8);
+  BOOST_TEST(readme.substr(start + 8, end - start - 8) == scene);
+  BOOST_TEST(run("run data/scenes/box_fill.toml --check").status == 0);
+  BOOST_TEST(run("run data/scenes/cubes_in_drum.toml --check").status == 0);
+}
+
 BOOST_AUTO_TEST_CASE(rejected_scene_exits_1_naming_the_place) {
   const Result r = run("run data/scenes/box_fill.toml --check --set pair[0].restitution=0");
   BOOST_TEST(r.status == 1);

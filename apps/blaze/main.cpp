@@ -44,9 +44,9 @@ const char* kUsage =
     "Writes to [output] directory: timeseries.csv (every csv_interval), particles.pvd with\n"
     "vtu/particles_NNNN.vtu (every vtu_interval; polyhedral scenes also polyhedra.pvd with their\n"
     "faces), walls.vtu, checkpoint.blz (every checkpoint_interval, atomically). A state that turns\n"
-    "NaN or Inf stops the run (exit status 3), naming the\n"
-    "step and particle, and leaves the last sampled state in last_good.vtu. Exit status 0 on\n"
-    "success, 1 on a rejected scene or a failed run, 2 on a usage error.\n";
+    "NaN or Inf stops the run (exit status 3), naming the step and particle, and leaves the last\n"
+    "sampled state in last_good.vtu. Exit status 0 on success, 1 on a rejected scene or a failed\n"
+    "run, 2 on a usage error.\n";
 
 struct Options {
   std::string scene, restart;
