@@ -601,7 +601,21 @@ void check_time_step(const toml::table& sim, const std::string& file, Scene& s) 
   const CriticalStep c = critical_step(s);
   s.dt_critical = c.dt_critical;
   s.dt_governing = c.governing;
+  s.impact_overlap = c.impact_overlap;
+  s.impact_speed = c.impact_speed;
+  s.overlap_governing = c.overlap_governing;
   if (s.steps_per_contact > 0) s.dt = c.contact_time / s.steps_per_contact;
+  if (s.impact_overlap > kMaxImpactOverlap && !s.force_dt) {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << ": an impact at " << c.impact_speed << " m/s (" << (s.max_impact_speed > 0 ? "max_impact_speed" : "the default: "
+        "initial speeds plus a fall through the domain") << ") of " << c.overlap_governing << " overlaps " << 100 * s.impact_overlap
+        << "% of the radius; above " << 100 * kMaxImpactOverlap << "% particles near tunnelling through walls and each other. "
+        << "Raise the stiffness, lower max_impact_speed if no impact is that fast, or set force_dt = true";
+    if (const toml::node* v = sim.get("max_impact_speed"))
+      throw SceneError(where(v->source(), file) + ": [simulation]: key 'max_impact_speed' = " + shown(*v) + msg.str());
+    throw SceneError(where(sim.source(), file) + ": [simulation]" + msg.str());
+  }
   if (s.dt <= kSafeStepFraction * s.dt_critical || s.force_dt) return;
   Fields f(sim, "[simulation]", file);
   std::ostringstream allowed;

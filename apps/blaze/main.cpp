@@ -186,7 +186,7 @@ int run_scene(const Scene& s, const Options& o) {
         }
       }
     }
-    if (k == steps) break;
+    if (k >= steps) break;  // (a restart may begin at or past the end)
     try {
       sim.step();
     } catch (const NonFiniteState& e) {
@@ -233,6 +233,9 @@ int main(int argc, char** argv) try {
               DefaultSpace::name, device_name(DefaultSpace{}).c_str());
   std::printf("dt = %.4g s = %.3f of the critical step %.4g s (%s)%s\n", s.dt, s.dt / s.dt_critical, s.dt_critical,
               s.dt_governing.c_str(), s.dt > kSafeStepFraction * s.dt_critical ? ", ABOVE the safe fraction: forced" : "");
+  std::printf("impact at %.3g m/s: deepest elastic overlap %.3g%% of the radius (%s)%s\n", s.impact_speed,
+              100 * s.impact_overlap, s.overlap_governing.c_str(),
+              s.impact_overlap > s.output.penetration_warning ? ", above penetration_warning" : "");
   if (o.check) return 0;
   return s.precision == PrecisionKind::float32 ? run_precision<float>(s, o) : run_precision<double>(s, o);
 } catch (const SceneError& e) {

@@ -19,6 +19,12 @@
 // 0.2 of the pair limit covers z <= 25 (12 for equal spheres). A scene whose dt exceeds that is
 // rejected unless force_dt is set; every run prints the ratio.
 //
+// Impact overlap: the deepest elastic overlap of a head-on impact at v, delta = v sqrt(m*/k)
+// (linear) or the Hertz delta_max above, over every pairing of particle types and walls, as a
+// share of the smaller radius. Beyond half the radius a fast particle nears tunnelling (its centre
+// crosses a wall's plane at 1), so such a scene is refused unless forced; the run prints the value.
+// It grows with size (delta / r ~ sqrt(r) at fixed density), so the largest types govern.
+//
 // Units: kg, m, s, N/m (linear k), Pa (E, E*).
 #pragma once
 #include <algorithm>
@@ -29,6 +35,7 @@
 namespace blaze {
 
 constexpr double kSafeStepFraction = 0.2;
+constexpr double kMaxImpactOverlap = 0.5;
 
 // The lightest and the smallest particle type of a material (the stiffest pairing); none: mass 0.
 struct MaterialExtremes {
@@ -97,8 +104,17 @@ struct CriticalStep {
   double dt_critical = 0;  // s, the smallest bound over pairings (and Rayleigh for Hertz)
   double contact_time = 0;  // s, the shortest contact (undamped), for steps_per_contact
   std::string governing;   // which pairing or estimate sets dt_critical
-  double impact_speed = 0;  // m/s, Hertz estimate's speed
+  double impact_speed = 0;  // m/s, of the Hertz and overlap estimates
+  double impact_overlap = 0;  // deepest elastic impact overlap / smaller radius
+  std::string overlap_governing;
 };
+
+// Deepest elastic overlap (m) of a head-on impact at v between effective mass m*, radius r*.
+inline double impact_overlap(const Scene& s, const PairSpec& spec, double e_star, double m_eff, double r_eff, double v) {
+  if (s.law == LawKind::linear) return v * std::sqrt(m_eff / linear_stiffness(s, spec));
+  const double kn = 4.0 / 3.0 * e_star * std::sqrt(r_eff);
+  return std::pow(5 * m_eff * v * v / (4 * kn), 0.4);
+}
 
 inline CriticalStep critical_step(const Scene& s) {
   CriticalStep c;
@@ -134,6 +150,29 @@ inline CriticalStep critical_step(const Scene& s) {
       if (particle[static_cast<std::size_t>(b)]) consider(a, b, false);
     for (int b = 0; b < n; ++b)
       if (world[static_cast<std::size_t>(b)]) consider(a, b, true);
+  }
+  // Impact overlap over every pairing of types, and of each type with each wall material.
+  std::vector<int> walls;
+  for (int b = 0; b < n; ++b)
+    if (world[static_cast<std::size_t>(b)]) walls.push_back(b);
+  auto mass = [&](const ParticleTypeSpec& t) { return s.materials[static_cast<std::size_t>(t.material)].density * t.volume; };
+  for (std::size_t i = 0; i < s.types.size(); ++i) {
+    const ParticleTypeSpec& ti = s.types[i];
+    auto check = [&](const PairSpec* spec, double e_star, double m_eff, double r_eff, double r_min, const std::string& name) {
+      if (!spec) return;
+      const double ratio = impact_overlap(s, *spec, e_star, m_eff, r_eff, c.impact_speed) / r_min;
+      if (ratio > c.impact_overlap) c.impact_overlap = ratio, c.overlap_governing = name;
+    };
+    for (std::size_t j = i; j < s.types.size(); ++j) {
+      const ParticleTypeSpec& tj = s.types[j];
+      const double mi = mass(ti), mj = mass(tj);
+      check(s.pair(ti.material, tj.material), pair_physics(s, ti.material, tj.material, false).e_star, mi * mj / (mi + mj),
+            ti.size() * tj.size() / (ti.size() + tj.size()), std::min(ti.size(), tj.size()),
+            "\"" + ti.name + "\" on \"" + tj.name + "\"");
+    }
+    for (int w : walls)
+      check(s.pair(ti.material, w), pair_physics(s, ti.material, w, true).e_star, mass(ti), ti.size(), ti.size(),
+            "\"" + ti.name + "\" on a \"" + s.materials[static_cast<std::size_t>(w)].name + "\" wall");
   }
   if (s.law == LawKind::hertz)
     for (const auto& t : s.types) {

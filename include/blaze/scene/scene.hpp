@@ -116,6 +116,9 @@ struct Scene {
   std::uint64_t seed = 1;
   double dt_critical = 0;        // s, filled in by the parser (critical_step.hpp)
   std::string dt_governing;      // which contact or estimate sets dt_critical
+  double impact_overlap = 0;     // deepest elastic impact overlap / radius at impact_speed (parser)
+  double impact_speed = 0;       // m/s, max_impact_speed or its default (parser)
+  std::string overlap_governing; // which pairing sets impact_overlap
   OutputSpec output;
   std::vector<MaterialSpec> materials;
   std::vector<PairSpec> pairs;
