@@ -95,15 +95,17 @@ struct BuildNeighbours {
 template <class Real>
 struct NeedsRebuild {
   GridSpec<Real> grid;
-  Vec3Field<Real> position, velocity, angular_velocity;
+  Vec3Field<Real> position;
   Vec3Field<Real> reference;
   Real half_skin_squared;
-  // 0: list still valid; 1: particle i moved half the skin or left the grid; 2: its state is not
-  // finite (NaN or Inf). The step's one reduction thus doubles as the NaN guard: without it a NaN
+  // 0: list still valid; 1: particle i moved half the skin or left the grid; 2: its position is
+  // not finite (NaN or Inf). The step's one reduction thus doubles as the NaN guard at no extra
+  // load: a NaN force or velocity reaches the position at the next drift, which this check follows
+  // (a NaN angular velocity one or two steps later, through the contact forces). Without it a NaN
   // position would hash as "outside" and the particle be removed as if it had left the domain.
   BLAZE_HD int operator()(Index i) const {
-    const Vec3<Real> x = position.get(i), v = velocity.get(i), w = angular_velocity.get(i);
-    if (!finite_r(x.x + x.y + x.z + v.x + v.y + v.z + w.x + w.y + w.z)) return 2;
+    const Vec3<Real> x = position.get(i);
+    if (!finite_r(x.x + x.y + x.z)) return 2;
     if (half_skin_squared < Real(0)) return 1;  // first build: no reference positions yet
     int cx, cy, cz;
     if (!grid.cell_of(x, cx, cy, cz)) return 1;

@@ -32,12 +32,12 @@ class BroadPhase {
   Index capacity() const { return capacity_; }
   std::uint64_t builds() const { return builds_; }
 
-  // 0: the neighbour list is valid; 1: it must be rebuilt; 2: some particle's state is not finite.
+  // 0: the neighbour list is valid; 1: it must be rebuilt; 2: some particle's position is not finite.
   int rebuild_check(ParticleStore<Real, Space>& store) {
     auto p = store.view();
     const Real h = Real(0.5) * skin_, h2 = builds_ == 0 ? Real(-1) : h * h;
     const int code = reduce_max(Space{}, p.n,
-                                NeedsRebuild<Real>{grid_, p.position, p.velocity, p.angular_velocity, field(reference_), h2}, 0);
+                                NeedsRebuild<Real>{grid_, p.position, field(reference_), h2}, 0);
     return builds_ == 0 && code == 0 ? 1 : code;
   }
 

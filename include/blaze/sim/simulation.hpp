@@ -63,7 +63,8 @@ class Simulation {
       : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(particles.radius)), params.skin) {
     check_params(params);
     check_materials(laws, world, particles);
-    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);
+    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);  // checks the lengths
+    check_finite(particles, 0);
     world_.upload(world);
     initial_count_ = store_.size();
     refresh_neighbours(0);
@@ -235,10 +236,15 @@ class Simulation {
   }
 
   [[noreturn]] void throw_non_finite(std::uint64_t step) const {
-    const ParticleState<Real> s = store_.download();
+    check_finite(store_.download(), step);
+    throw NonFiniteState("non-finite state at step " + std::to_string(step), step, -1);
+  }
+  // Throws NonFiniteState naming the first particle with a NaN or Inf in its state.
+  void check_finite(const ParticleState<Real>& s, std::uint64_t step) const {
     auto bad = [](const Vec3<Real>& v) { return !(finite_r(v.x) && finite_r(v.y) && finite_r(v.z)); };
     for (std::size_t k = 0; k < s.size(); ++k)
-      if (bad(s.position[k]) || bad(s.velocity[k]) || bad(s.angular_velocity[k])) {
+      if (bad(s.position[k]) || bad(s.velocity[k]) || bad(s.angular_velocity[k]) ||
+          !finite_r(s.orientation[k].w + s.orientation[k].x + s.orientation[k].y + s.orientation[k].z)) {
         const auto& x = s.position[k];
         const auto& v = s.velocity[k];
         throw NonFiniteState("non-finite state at step " + std::to_string(step) + " (t = " +
@@ -248,7 +254,6 @@ class Simulation {
                                  std::to_string(v.y) + ", " + std::to_string(v.z) + ") m/s",
                              step, s.id[k]);
       }
-    throw NonFiniteState("non-finite state at step " + std::to_string(step), step, -1);
   }
 
   void compute_forces() {
