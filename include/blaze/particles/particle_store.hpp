@@ -34,10 +34,22 @@ struct Gather {
   BLAZE_HD void operator()(Index i) const { dst[i] = src[perm[i]]; }
 };
 
+// Every array of a ParticleStore that carries state across steps, on the host, raw (inverse mass
+// and inertia as stored, so a round trip is exact) and in the store's order: what a checkpoint
+// holds for a bitwise restart. Force and torque are included: some integrators read them before
+// the next evaluation.
+template <class Real>
+struct StoreSnapshot {
+  static constexpr std::size_t kRadiusField = 25;  // the radius array's place in `reals`
+  std::vector<std::vector<Real>> reals;  // ParticleStore::real_fields() order; empty where unused
+  std::vector<std::uint8_t> material, type;
+  std::vector<Index> id;
+};
+
 template <class Real, class Space>
 class ParticleStore {
  public:
-  static constexpr std::size_t kRadiusField = 25;  // radius_'s place in Snapshot::reals
+  static constexpr std::size_t kRadiusField = StoreSnapshot<Real>::kRadiusField;
   void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
@@ -109,14 +121,7 @@ class ParticleStore {
             penetration_.size() ? penetration_.data() : nullptr};
   }
 
-  // Every array that carries state across steps, raw (inverse mass and inertia as stored, so a
-  // round trip is exact) and in the store's order: what a checkpoint holds for a bitwise restart.
-  // Force and torque are included: some integrators read them before the next evaluation.
-  struct Snapshot {
-    std::vector<std::vector<Real>> reals;  // real_fields() order; empty where a field is unused
-    std::vector<std::uint8_t> material, type;
-    std::vector<Index> id;
-  };
+  using Snapshot = StoreSnapshot<Real>;
   Snapshot snapshot() const {
     Snapshot s;
     for (const auto* f : const_cast<ParticleStore*>(this)->real_fields()) s.reals.push_back(to_host(*f, f->size() ? n_ : 0));

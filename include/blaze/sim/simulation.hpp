@@ -46,7 +46,7 @@ struct PenetrationReport {
 // restarted run rebuilds the same list (Simulation::snapshot()).
 template <class Real>
 struct SimulationSnapshot {
-  typename ParticleStore<Real, Host>::Snapshot store;
+  StoreSnapshot<Real> store;
   std::uint64_t steps = 0;
   Index initial_count = 0, removed_count = 0;
   double removed_mass = 0;
@@ -77,14 +77,12 @@ class Simulation {
   // priming, so the next step is bit for bit the step the original run took.
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const SimulationSnapshot<Real>& snap, const Shape& shape = Shape{})
-      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(snap.store.reals.at(ParticleStore<Real, Host>::kRadiusField))), params.skin) {
+      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField))), params.skin) {
     check_params(params);
     ParticleState<Real> materials_only;
     materials_only.material = snap.store.material;
     check_materials(laws, world, materials_only);
-    typename ParticleStore<Real, Space>::Snapshot s;
-    s.reals = snap.store.reals, s.material = snap.store.material, s.type = snap.store.type, s.id = snap.store.id;
-    store_.restore(s);
+    store_.restore(snap.store);
     world_.upload(world);
     steps_ = snap.steps;
     initial_count_ = snap.initial_count;
@@ -99,8 +97,7 @@ class Simulation {
   SimulationSnapshot<Real> snapshot() {
     apply_removal(broad_.rebuild(store_, timer_, true));
     SimulationSnapshot<Real> out;
-    const auto s = store_.snapshot();
-    out.store.reals = s.reals, out.store.material = s.material, out.store.type = s.type, out.store.id = s.id;
+    out.store = store_.snapshot();
     out.steps = steps_;
     out.initial_count = initial_count_;
     out.removed_count = removed_count_;
