@@ -3,13 +3,16 @@
 #   make test              CPU verification suite (+ compile-only check of the CUDA build)
 #   make test BACKEND=cuda verification suite on the GPU
 #   make bench             particle-steps/s and per-phase times (GPU if present)
+#   make test SANITIZE=1   the CPU suite built with AddressSanitizer + UndefinedBehaviorSanitizer (in build-sanitize/)
+#   make stress            the stress suite at full size (10^5 particles x 10^5 steps; GPU if present)
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
 #   make figures           all of them; make verification-readme renders verification/README.md
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
 BACKEND ?= cpu
-BUILD ?= build
+SANITIZE ?=
+BUILD ?= $(if $(SANITIZE),build-sanitize,build)
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 NVCC ?= $(shell command -v nvcc 2>/dev/null || ls /usr/local/cuda/bin/nvcc 2>/dev/null)
 HAVE_GPU := $(shell nvidia-smi -L >/dev/null 2>&1 && echo yes)
@@ -21,6 +24,10 @@ space := $(empty) $(empty)
 CXX := g++
 WARN := -Wall -Wextra -Wshadow -Werror
 CXXFLAGS := -std=c++17 -O2 -fopenmp $(WARN) -Iinclude -I. -isystem /usr/include/eigen3 -DBOOST_TEST_DYN_LINK
+# SANITIZE=1: every error is fatal (no recovery), so a sanitizer finding fails the suite.
+SAN_FLAGS := $(if $(SANITIZE),-fsanitize=address$(comma)undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g)
+CXXFLAGS += $(SAN_FLAGS)
+LDFLAGS_cpu := -fopenmp $(SAN_FLAGS)
 # EIGEN_NO_CUDA: Eigen is host-only here (shape set-up, references), so it must not mark its
 # functions __host__ __device__ under nvcc.
 NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-call,all-warnings -DEIGEN_NO_CUDA \
@@ -37,7 +44,7 @@ HOST_OBJ := $(BUILD)/host/src/scene_toml.o
 TEST_SRC ?= $(wildcard verification/*.cpp)
 STUDIES := $(notdir $(wildcard studies/*))
 
-.PHONY: deps test run bench clean build-cpu build-cuda check-cuda figures verification-readme
+.PHONY: deps test run bench stress clean build-cpu build-cuda check-cuda figures verification-readme
 .DEFAULT_GOAL := run
 .SECONDARY:
 
@@ -56,22 +63,22 @@ $(BUILD)/cuda/%.o: %.cpp $(HEADERS)
 	$(NVCC) $(NVCCFLAGS) -x cu -c $< -o $@
 
 $(BUILD)/cpu/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cpu/%.o) $(HOST_OBJ)
-	$(CXX) -fopenmp $^ -o $@ $(TEST_LIBS_cpu)
+	$(CXX) $(LDFLAGS_cpu) $^ -o $@ $(TEST_LIBS_cpu)
 $(BUILD)/cuda/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cuda/%.o) $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(TEST_LIBS_cuda)
 
 # blaze run SCENE.toml: the general scene runner, one per backend.
 $(BUILD)/cpu/blaze: $(BUILD)/cpu/apps/blaze/main.o $(HOST_OBJ)
-	$(CXX) -fopenmp $^ -o $@
+	$(CXX) $(LDFLAGS_cpu) $^ -o $@
 $(BUILD)/cuda/blaze: $(BUILD)/cuda/apps/blaze/main.o $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-$(BUILD)/cpu/study_%: $(BUILD)/cpu/studies/%/main.o
-	$(CXX) -fopenmp $^ -o $@ $(PLOT_LIBS)
-$(BUILD)/cuda/study_%: $(BUILD)/cuda/studies/%/main.o
+$(BUILD)/cpu/study_%: $(BUILD)/cpu/studies/%/main.o $(HOST_OBJ)
+	$(CXX) $(LDFLAGS_cpu) $^ -o $@ $(PLOT_LIBS)
+$(BUILD)/cuda/study_%: $(BUILD)/cuda/studies/%/main.o $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(PLOT_LIBS)
 $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
-	$(CXX) -fopenmp $^ -o $@
+	$(CXX) $(LDFLAGS_cpu) $^ -o $@
 $(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
@@ -95,12 +102,24 @@ ifeq ($(BACKEND),cuda)
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests $(BUILD)/cuda/blaze
 	OMP_NUM_THREADS=$(NPROC) $(call RUN_TESTS,cuda)
+else ifneq ($(SANITIZE),)
+# Sanitized: the suite and the blaze program it runs; no CUDA check (nvcc does not take these flags).
+test: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/blaze_tests $(BUILD)/cpu/blaze
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $(call RUN_TESTS,cpu)
 else
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) build-cpu
 	@$(MAKE) --no-print-directory check-cuda
 	$(call RUN_TESTS,cpu)
 endif
+
+# The stress suite at full size (BLAZE_STRESS=full: 10^5 particles for 10^5 steps, a finer dt
+# sweep); on the GPU when there is one.
+stress: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze_tests $(BUILD)/$(RUN_BACKEND)/blaze
+	BLAZE_STRESS=full $(BUILD)/$(RUN_BACKEND)/blaze_tests --log_level=message --report_level=short --color_output=no \
+	  --run_test=stress
 
 # ---- thesis figures: plots/fig-X.gp names its verification cases on a "# test:" line ----------
 FIGURE_DIR := data/verification
@@ -135,7 +154,7 @@ RUN_BACKEND := $(if $(and $(HAVE_GPU),$(NVCC)),cuda,cpu)
 run: deps
 	@echo "make run: backend = $(RUN_BACKEND) ($(if $(HAVE_GPU),GPU found,no GPU found: running on the CPU))"
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
-	$(BUILD)/$(RUN_BACKEND)/study_hopper studies/hopper/hopper.params
+	$(BUILD)/$(RUN_BACKEND)/study_hopper studies/hopper/hopper.toml
 
 bench: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze_bench

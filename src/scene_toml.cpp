@@ -238,9 +238,10 @@ void apply_override(toml::table& root, const std::string& arg) {
   const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
   std::vector<std::string> parts = split_path(key);
   if (parts.empty()) throw SceneError(usage);
-  if (parts.size() == 1) {  // bare key: [simulation] or [output]
-    const bool in_output = root["output"][parts[0]] && !root["simulation"][parts[0]];
-    parts.insert(parts.begin(), in_output ? "output" : "simulation");
+  if (parts.size() == 1) {  // bare key: [simulation], or [output] or [study] where the key is there
+    const bool in_sim = !!root["simulation"][parts[0]];
+    const char* table = !in_sim && root["output"][parts[0]] ? "output" : !in_sim && root["study"][parts[0]] ? "study" : "simulation";
+    parts.insert(parts.begin(), table);
   }
   // The value as TOML; a bare word (precision=float) is taken as a string.
   toml::table parsed;
@@ -349,12 +350,24 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
 }
 
 void read_output(const toml::table& t, const std::string& file, Scene& s) {
-  Fields f(t, "[output]", file, {"directory", "csv_interval", "vtu_interval", "checkpoint_interval", "penetration_warning"});
+  Fields f(t, "[output]", file,
+           {"directory", "csv_interval", "vtu_interval", "checkpoint_interval", "penetration_warning", "energy_gain_limit"});
   s.output.directory = f.string_or("directory", "data/run", "a directory path (created if missing)");
   s.output.csv_interval = f.number_or("csv_interval", 0, non_negative("s (0: no CSV)"));
   s.output.vtu_interval = f.number_or("vtu_interval", 0, non_negative("s (0: no VTU frames)"));
   s.output.checkpoint_interval = f.number_or("checkpoint_interval", 0, non_negative("s (0: no checkpoints)"));
   s.output.penetration_warning = f.number_or("penetration_warning", 0.05, {0, 1, true, false, "overlap / radius"});
+  s.output.energy_gain_limit = f.number_or("energy_gain_limit", 0.05, {0, 1, true, false, "x the energy scale"});
+}
+
+// [study]: numbers only, read by name by a study driver (Scene::study_value), which also rejects
+// keys it does not read.
+void read_study(const toml::table& t, const std::string& file, Scene& s) {
+  Fields f(t, "[study]", file);
+  for (const auto& [k, v] : t) {
+    if (!v.is_number()) f.fail(v, std::string(k.str()), "a number (a study reads [study] values as numbers)");
+    s.study.push_back({std::string(k.str()), where(v.source(), file), v.value_or(0.0)});
+  }
 }
 
 void read_materials(const toml::table& root, const std::string& file, Scene& s) {
@@ -549,8 +562,9 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
   const auto materials = material_names(s);
   const auto walls = tables(root, "wall", file);
   for (std::size_t k = 0; k < walls.size(); ++k) {
-    Fields f(*walls[k], item_label("wall", k), file, {"material", "vertices", "rim"});
+    Fields f(*walls[k], item_label("wall", k), file, {"name", "material", "vertices", "rim"});
     WallSpec w;
+    w.name = f.string_or("name", "", "a non-empty name");
     w.material = lookup(f, "material", materials, "material");
     w.vertices = f.vec3_list("vertices", any("m"), 3, PlanarPolygon<double>::kMaxVertices);
     try {
@@ -559,8 +573,21 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
       f.fail(*f.get("vertices"), "vertices", std::string("a convex planar polygon: ") + e.what());
     }
     if (const toml::node* rim = f.get("rim")) {
-      if (!rim->is_boolean()) f.fail(*rim, "rim", "true (contact on every edge) or false (faces only)");
-      w.rim_edges = rim->as_boolean()->get() ? 0xffffffffu : 0u;
+      const std::string allowed = "true (contact on every edge), false (faces only) or a list of edge indices 0.." +
+                                  std::to_string(w.vertices.size() - 1) + " (edge k runs from vertex k to k + 1)";
+      if (rim->is_boolean()) {
+        w.rim_edges = rim->as_boolean()->get() ? 0xffffffffu : 0u;
+      } else if (const toml::array* edges = rim->as_array()) {
+        w.rim_edges = 0;
+        for (const auto& e : *edges) {
+          if (!e.is_integer() || e.as_integer()->get() < 0 ||
+              e.as_integer()->get() >= static_cast<std::int64_t>(w.vertices.size()))
+            f.fail(*rim, "rim", allowed);
+          w.rim_edges |= 1u << e.as_integer()->get();
+        }
+      } else {
+        f.fail(*rim, "rim", allowed);
+      }
     }
     s.walls.push_back(w);
   }
@@ -630,7 +657,7 @@ void check_time_step(const toml::table& sim, const std::string& file, Scene& s) 
 Scene read(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(root, o);
   static const std::set<std::string> known = {"simulation", "output", "material", "pair", "particle_type",
-                                              "lattice", "particles", "fill", "wall", "cylinder"};
+                                              "lattice", "particles", "fill", "wall", "cylinder", "study"};
   for (const auto& [k, v] : root)
     if (!known.count(std::string(k.str()))) {
       std::string allowed;
@@ -642,6 +669,7 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
   if (!root.contains("simulation")) throw SceneError(file + ": no [simulation] table (dt or steps_per_contact, end_time, domain_lo, domain_hi)");
   read_simulation(table(root, "simulation", file), file, s);
   read_output(table(root, "output", file), file, s);
+  read_study(table(root, "study", file), file, s);
   read_materials(root, file, s);
   read_pairs(root, file, s);
   read_types(root, file, s);

@@ -2,44 +2,17 @@
 // option fails with its exit status and a message naming the place, and a run restarted from its
 // checkpoint rewrites exactly the time series the uninterrupted run wrote.
 #include <boost/test/unit_test.hpp>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include "verification/run_program.hpp"
 
 namespace fs = std::filesystem;
+using blaze::test::blaze_binary;
+using blaze::test::slurp;
+using Result = blaze::test::ProgramResult;
 
 namespace {
-
-// build/<backend>/blaze, beside this test binary (make test builds both).
-std::string blaze_binary() {
-  const auto& argv = boost::unit_test::framework::master_test_suite().argv;
-  return (fs::absolute(argv[0]).parent_path() / "blaze").string();
-}
-
-struct Result {
-  int status;
-  std::string output;
-};
-Result run(const std::string& args) {
-  Result r{-1, ""};
-  FILE* p = popen((blaze_binary() + " " + args + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  char buf[512];
-  while (fgets(buf, sizeof buf, p)) r.output += buf;
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
+Result run(const std::string& args) { return blaze::test::run_blaze(args); }
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(blaze_run)

@@ -25,7 +25,7 @@ std::set<std::pair<Index, Index>> grid_pairs(const ParticleState<Real>& s, doubl
   store.upload(s, false);
   BroadPhase<Real, DefaultSpace> bp(grid, static_cast<Real>(skin));
   PhaseTimer<DefaultSpace> timer;
-  const auto removed = bp.rebuild(store, timer);
+  const auto removed = bp.rebuild(store, timer, Vec3<Real>{0, 0, 0});
   BOOST_TEST(removed.count == 0);
   const auto nl = bp.neighbours();
   const Index n = store.size();

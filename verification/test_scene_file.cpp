@@ -175,6 +175,30 @@ BOOST_AUTO_TEST_CASE(bad_values_name_file_line_key_value_and_allowed) {
   }
 }
 
+// A study's [study] numbers: read by name within a range, rejected by file:line when out of it
+// or when the study does not read them; a wall's name and its rim edges as a list.
+BOOST_AUTO_TEST_CASE(study_values_wall_names_and_rim_edges) {
+  const std::string text = kBase + "[study]\ngate_open_time = 0.5\nsettle = 2\n";
+  const Scene s = parse_scene(text, "scene.toml");
+  BOOST_TEST(s.study_value("gate_open_time", 0, 1, "s") == 0.5);
+  const std::string unread = rejection([&] { s.check_study_used(); });
+  BOOST_TEST(has(unread, "scene.toml:" + std::to_string(line_of(text, "settle = 2")) + ": [study]: unknown key 'settle'"), unread);
+  const std::string range = rejection([&] { s.study_value("settle", 0, 1, "s"); });
+  BOOST_TEST(has(range, "[study]: key 'settle' = 2: must be in [0, 1] s"), range);
+  BOOST_TEST(has(rejection([&] { s.study_value("missing", 0, 1, "s"); }), "[study]: missing key 'missing'"));
+  const Scene o = parse_scene(text, "scene.toml", {"gate_open_time=0.25"});  // a bare key found in [study]
+  BOOST_TEST(o.study_value("gate_open_time", 0, 1, "s") == 0.25);
+  BOOST_TEST(has(rejection([&] { parse_scene(kBase + "[study]\nx = \"a\"\n", "scene.toml"); }), "[study]: key 'x' = \"a\": a number"));
+
+  const Scene w = parse_scene(edit("material = \"steel\"", "material = \"steel\"\nrim = [0, 2]\nname = \"gate\""), "scene.toml");
+  BOOST_TEST(w.walls[0].rim_edges == 5u);
+  BOOST_TEST(w.walls[0].name == "gate");
+  const std::string bad = rejection([&] { parse_scene(edit("material = \"steel\"", "material = \"steel\"\nrim = [4]"), "scene.toml"); });
+  BOOST_TEST(has(bad, "key 'rim' = [4]: true (contact on every edge), false (faces only) or a list of edge indices 0..3"), bad);
+  BOOST_TEST(has(rejection([&] { parse_scene(edit("csv_interval = 0.001", "energy_gain_limit = 0"), "scene.toml"); }),
+                 "key 'energy_gain_limit' = 0: must be in (0, 1]"));
+}
+
 BOOST_AUTO_TEST_CASE(poisson_ratio_outside_its_range_is_rejected) {
   for (const char* nu : {"0.5", "-1", "0.7"}) {
     const std::string text = edit("poisson_ratio = 0.23", std::string("poisson_ratio = ") + nu, hertz_scene());

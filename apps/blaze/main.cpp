@@ -45,8 +45,9 @@ const char* kUsage =
     "vtu/particles_NNNN.vtu (every vtu_interval; polyhedral scenes also polyhedra.pvd with their\n"
     "faces), walls.vtu, checkpoint.blz (every checkpoint_interval, atomically). A state that turns\n"
     "NaN or Inf stops the run (exit status 3), naming the step and particle, and leaves the last\n"
-    "sampled state in last_good.vtu. Exit status 0 on success, 1 on a rejected scene or a failed\n"
-    "run, 2 on a usage error.\n";
+    "sampled state in last_good.vtu; so does a sampled energy above the initial one by more than\n"
+    "[output] energy_gain_limit (an unstable time step). Exit status 0 on success, 1 on a rejected\n"
+    "scene or a failed run, 2 on a usage error, 3 when a guard stopped the run.\n";
 
 struct Options {
   std::string scene, restart;
@@ -142,13 +143,15 @@ int run_scene(const Scene& s, const Options& o) {
   const std::string& dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
   const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
-  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, prm.gravity, particles.size(), resume_at);
+  const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
+  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
+                   resume_at);
   ParticleState<Real> last_good = o.restart.empty() ? particles : sim.state();
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
   int frame = 0;
   if (!o.restart.empty()) {
-    log.resume(restart.text.substr(restart.text.find('\n') + 1), last_good);
+    log.resume(restart.text.substr(restart.text.find('\n') + 1));
     frame = static_cast<int>(pvd.resume(resume_at));
     pvd_faces.resume(resume_at);
     std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
@@ -164,7 +167,16 @@ int run_scene(const Scene& s, const Options& o) {
   Progress progress(!o.quiet, s.end_time);
   double particle_steps = 0;
   const std::uint64_t first = sim.steps();
-  for (std::uint64_t k = first;; ++k) {
+  const auto loop_start = std::chrono::steady_clock::now();
+  // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
+  const auto stop = [&](const std::exception& e) {
+    progress.update(sim.time(), particle_steps, true);
+    write_particles_vtu(dir + "/last_good.vtu", last_good);
+    std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
+                 "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
+    return 3;
+  };
+  for (std::uint64_t k = first;; ++k) try {
     const bool resumed = k == first && first > 0;  // that sample is in the files already
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
@@ -187,24 +199,22 @@ int run_scene(const Scene& s, const Options& o) {
       }
     }
     if (k >= steps) break;  // (a restart may begin at or past the end)
-    try {
-      sim.step();
-    } catch (const NonFiniteState& e) {
-      progress.update(sim.time(), particle_steps, true);
-      write_particles_vtu(dir + "/last_good.vtu", last_good);
-      std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
-                   "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
-      return 3;
-    }
+    sim.step();
     particle_steps += static_cast<double>(sim.size());
     progress.update(sim.time(), particle_steps);
+  } catch (const NonFiniteState& e) {
+    return stop(e);
+  } catch (const EnergyGain& e) {
+    return stop(e);
   }
   progress.update(sim.time(), particle_steps, true);
   std::printf("done: %llu steps, %u particles left, %u removed (left the domain); deepest penetration %.3g%% of "
-              "the radius, over %.3g%% in %ld samples\n",
+              "the radius, over %.3g%% in %ld samples; largest energy gain %.3g of the scale\n",
               static_cast<unsigned long long>(steps), static_cast<unsigned>(sim.size()),
               static_cast<unsigned>(sim.removed_count()), 100 * log.worst_penetration(), 100 * s.output.penetration_warning,
-              log.samples_over_limit());
+              log.samples_over_limit(), log.max_energy_gain());
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
+  std::printf("wall time %.3f s for the steps and output, %.4g particle-steps/s\n", wall, wall > 0 ? particle_steps / wall : 0.0);
   std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)\n", dir.c_str(), dir.c_str(), frame);
   return 0;
 }

@@ -18,6 +18,10 @@ class BroadPhase {
   struct Removed {
     Index count = 0;
     double mass = 0;  // kg
+    // Translational kinetic + potential energy (J, potential in `gravity`) at the moment of
+    // removal, for the run's energy balance (rotational energy is left out: a particle leaving
+    // the domain carries little of it).
+    double energy = 0;
   };
 
   BroadPhase(const GridSpec<Real>& grid, Real skin) : grid_(grid), skin_(skin) {
@@ -42,7 +46,8 @@ class BroadPhase {
   }
 
   // with_forces: also move force and torque (a rebuild between steps, for a checkpoint).
-  Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer, bool with_forces = false) {
+  Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer, const Vec3<Real>& gravity,
+                  bool with_forces = false) {
     const Index n = store.size();
     keys_.resize(std::max<std::size_t>(keys_.size(), n));
     order_.resize(std::max<std::size_t>(order_.size(), n));
@@ -59,9 +64,25 @@ class BroadPhase {
       const std::uint32_t first_outside = read_one(cell_start_.data() + grid_.outside_key(), Space{});
       if (first_outside != kEmptyCell) {
         removed.count = n - static_cast<Index>(first_outside);
-        std::vector<Real> inv_m(removed.count);
-        copy_n(store.view().inv_mass + first_outside, inv_m.size(), inv_m.data(), Space{}, Host{});
-        for (Real im : inv_m) removed.mass += 1.0 / static_cast<double>(im);
+        const auto p = store.view();
+        std::vector<Real> inv_m(removed.count), x[3], v[3];
+        copy_n(p.inv_mass + first_outside, inv_m.size(), inv_m.data(), Space{}, Host{});
+        const Real* xs[3] = {p.position.x, p.position.y, p.position.z};
+        const Real* vs[3] = {p.velocity.x, p.velocity.y, p.velocity.z};
+        for (int d = 0; d < 3; ++d) {
+          x[d].resize(removed.count), v[d].resize(removed.count);
+          copy_n(xs[d] + first_outside, x[d].size(), x[d].data(), Space{}, Host{});
+          copy_n(vs[d] + first_outside, v[d].size(), v[d].data(), Space{}, Host{});
+        }
+        for (std::size_t k = 0; k < inv_m.size(); ++k) {
+          const double m = 1.0 / static_cast<double>(inv_m[k]);
+          removed.mass += m;
+          double v2 = 0, gx = 0;
+          for (int d = 0; d < 3; ++d) v2 += static_cast<double>(v[d][k]) * static_cast<double>(v[d][k]);
+          gx = static_cast<double>(gravity.x) * x[0][k] + static_cast<double>(gravity.y) * x[1][k] +
+               static_cast<double>(gravity.z) * x[2][k];
+          removed.energy += 0.5 * m * v2 - m * gx;
+        }
         store.truncate(static_cast<Index>(first_outside));
       }
       build_list(store);

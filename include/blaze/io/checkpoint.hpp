@@ -1,10 +1,10 @@
 // Checkpoint files: a SimulationSnapshot plus the driver's own text (run metadata), versioned and
 // checksummed, written atomically.
 //
-// Layout (little-endian, version 1):
+// Layout (little-endian, version 2):
 //   "BLZCKPT" '\0' | u32 version | u32 bytes per real (4 or 8) | u64 payload bytes | payload |
 //   u64 FNV-1a 64 of the payload
-//   payload: u64 steps, i64 initial count, i64 removed count, f64 removed mass,
+//   payload: u64 steps, i64 initial count, i64 removed count, f64 removed mass, f64 removed energy,
 //            u32 real arrays, each u64 length + values; u64 n, n material bytes, n type bytes,
 //            n ids (i32); u64 text length + text
 // Writing goes to <path>.tmp, is flushed and fsync'ed, then renamed over <path>: a run killed
@@ -33,7 +33,7 @@ struct CheckpointError : std::runtime_error {
 namespace checkpoint_detail {
 
 constexpr char kMagic[8] = {'B', 'L', 'Z', 'C', 'K', 'P', 'T', '\0'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: the removed particles' energy
 
 inline std::uint64_t fnv1a(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -95,6 +95,7 @@ void write_checkpoint(const std::string& path, const SimulationSnapshot<Real>& s
   put(payload, static_cast<std::int64_t>(s.initial_count));
   put(payload, static_cast<std::int64_t>(s.removed_count));
   put(payload, s.removed_mass);
+  put(payload, s.removed_energy);
   put(payload, static_cast<std::uint32_t>(s.store.reals.size()));
   for (const auto& a : s.store.reals) put_array(payload, a);
   put(payload, static_cast<std::uint64_t>(s.store.id.size()));
@@ -171,6 +172,7 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
   s.initial_count = static_cast<Index>(r.get<std::int64_t>());
   s.removed_count = static_cast<Index>(r.get<std::int64_t>());
   s.removed_mass = r.get<double>();
+  s.removed_energy = r.get<double>();
   const auto fields = r.get<std::uint32_t>();
   if (fields > 64) r.fail("too many arrays");
   for (std::uint32_t k = 0; k < fields; ++k) s.store.reals.push_back(r.array<Real>());

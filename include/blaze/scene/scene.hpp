@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -81,6 +82,7 @@ struct FillSpec {
 };
 
 struct WallSpec {  // convex planar polygon; the normal follows the right-hand rule of the vertex order
+  std::string name;  // optional; a study may address a wall by it (the hopper's "gate")
   int material = 0;
   std::vector<Vec3<double>> vertices;  // m
   std::uint32_t rim_edges = 0xffffffffu;  // bit k: edge k -> k+1 has rim contact
@@ -97,6 +99,18 @@ struct OutputSpec {
   double vtu_interval = 0;        // s between VTU frames (0: none)
   double checkpoint_interval = 0; // s between checkpoints (0: none)
   double penetration_warning = 0.05;  // overlap / radius reported above this (thesis: 5%)
+  // A sampled energy above the initial one by this share of the energy scale stops the run
+  // (run_log.hpp). The default, 5%, sits above velocity Verlet's energy wobble during contacts at
+  // the largest accepted step (omega dt <= 0.4: (omega dt)^2 / 4 = 4% of the colliding particles'
+  // energy); an unstable step grows geometrically and crosses any such limit within a few steps.
+  double energy_gain_limit = 0.05;
+};
+
+// A value of the scene's [study] table: numbers a study driver reads by name (study_value).
+struct StudyValue {
+  std::string key, where;  // where: "file:line" or "command line (--set)"
+  double value = 0;
+  mutable bool used = false;
 };
 
 struct Scene {
@@ -128,11 +142,36 @@ struct Scene {
   std::vector<FillSpec> fills;
   std::vector<WallSpec> walls;
   std::vector<CylinderSpec> cylinders;
+  std::vector<StudyValue> study;
+
+  // A [study] value in [lo, hi] (unit for messages); missing or out of range: a SceneError
+  // naming the file, line, key, value and the allowed range.
+  double study_value(const std::string& key, double lo, double hi, const std::string& unit) const {
+    const std::string allowed = "in [" + shortest(lo) + ", " + shortest(hi) + "] " + unit;
+    for (const auto& v : study)
+      if (v.key == key) {
+        if (!(v.value >= lo && v.value <= hi))
+          throw SceneError(v.where + ": [study]: key '" + key + "' = " + shortest(v.value) + ": must be " + allowed);
+        v.used = true;
+        return v.value;
+      }
+    throw SceneError(path + ": [study]: missing key '" + key + "' (a number " + allowed + ")");
+  }
+  // After a study has read its values: any other [study] key is a typo, an error.
+  void check_study_used() const {
+    for (const auto& v : study)
+      if (!v.used) throw SceneError(v.where + ": [study]: unknown key '" + v.key + "' (this study does not read it)");
+  }
 
   bool all_spheres() const {
     for (const auto& t : types)
       if (!t.is_sphere()) return false;
     return true;
+  }
+  static std::string shortest(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
   }
   const PairSpec* pair(int a, int b) const {
     for (const auto& p : pairs)

@@ -3,12 +3,19 @@
 //   t_s, particles, removed, kinetic_translational_J, kinetic_rotational_J, potential_J, total_J,
 //   dissipated_J, contacts_vertex_face, contacts_edge_edge, max_penetration_ratio,
 //   penetration_over_limit, worst_penetration_id
-// dissipated_J = E(0) - E(t) - E_removed: what contacts and drag took out. E_removed sums each
-// removed particle's energy at the last sample that still held it, so it is exact when nothing
-// left the domain and an estimate (one sample interval late) otherwise.
+// dissipated_J = E(0) - E(t) - E_removed: what contacts and drag took out. E_removed is the
+// kinetic and potential energy the removed particles had when they were removed
+// (Simulation::removed_energy; their rotational energy is left out).
 // Penetration (overlap / radius) is the deepest over all steps since the previous sample, not
 // only at the sample: a particle over `limit` is counted and the worst named (the thesis warns
 // at 5%). Particles leaving the domain are reported the sample after they left.
+//
+// Energy guard: nothing feeds energy in (walls are static), so E(t) + E_removed <= E(0) up to the
+// integrator's O(dt^2) wobble; the elastic energy held in contacts only lowers E(t). A gain above
+// `energy_gain_limit` x scale, scale = initial kinetic energy + sum m |g| h (h: the domain's extent
+// along g, so the most energy the bed can exchange), is an unstable step: sample() throws
+// EnergyGain before it writes that row, so no row with created energy reaches the file. (Walls
+// that move will do work on the bed; the balance must then include that work.)
 #pragma once
 #include <cstdio>
 #include <fstream>
@@ -19,13 +26,19 @@
 
 namespace blaze {
 
+// A run whose energy rose above its initial value: what() names the time, the gain and the scale.
+struct EnergyGain : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 template <class Real>
 class RunLog {
  public:
   // keep_until >= 0 (a restarted run): the existing file's rows up to that time stay.
-  RunLog(const std::string& path, double penetration_limit, const Vec3<Real>& gravity, std::size_t particles,
-         double keep_until = -1)
-      : path_(path), limit_(penetration_limit), gravity_(gravity), energy_(particles, 0), present_(particles, 0) {
+  // `height`: the domain's extent along gravity (m), for the energy guard's scale.
+  RunLog(const std::string& path, double penetration_limit, double energy_gain_limit, const Vec3<Real>& gravity,
+         double height, double keep_until = -1)
+      : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height) {
     std::string kept = "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,total_J,dissipated_J,"
                        "contacts_vertex_face,contacts_edge_edge,max_penetration_ratio,penetration_over_limit,"
                        "worst_penetration_id\n";
@@ -42,18 +55,14 @@ class RunLog {
   }
 
   // A restarted run continues with the energy bookkeeping its checkpoint saved (save()).
-  void resume(const std::string& saved, const ParticleState<Real>& st) {
-    if (std::sscanf(saved.c_str(), "e0=%lf removed_energy=%lf", &e0_, &removed_energy_) != 2)
+  void resume(const std::string& saved) {
+    if (std::sscanf(saved.c_str(), "e0=%lf scale=%lf", &e0_, &scale_) != 2)
       throw std::runtime_error("checkpoint: no energy bookkeeping in its run text");
     started_ = true;
-    for (std::size_t k = 0; k < st.size(); ++k) {
-      energy_[static_cast<std::size_t>(st.id[k])] = particle_energies(st, k, gravity_).total();
-      present_[static_cast<std::size_t>(st.id[k])] = 1;
-    }
   }
   std::string save() const {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "e0=%.17g removed_energy=%.17g", e0_, removed_energy_);
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "e0=%.17g scale=%.17g", e0_, scale_);
     return buf;
   }
 
@@ -61,24 +70,28 @@ class RunLog {
   template <class Sim>
   void sample(Sim& sim, const ParticleState<Real>& st) {
     Energies e;
-    // Each particle's energy, by id, for the removed-energy estimate.
-    std::vector<char> now(present_.size(), 0);
+    double exchange = 0;  // sum m |g| h
     for (std::size_t k = 0; k < st.size(); ++k) {
       const Energies p = particle_energies(st, k, gravity_);
       e.translational += p.translational, e.rotational += p.rotational, e.potential += p.potential;
-      const auto id = static_cast<std::size_t>(st.id[k]);
-      energy_[id] = p.total();
-      now[id] = 1;
+      exchange += static_cast<double>(st.mass[k]) * static_cast<double>(norm(gravity_)) * height_;
     }
-    for (std::size_t id = 0; id < present_.size(); ++id)
-      if (present_[id] && !now[id]) removed_energy_ += energy_[id];
-    if (!started_) e0_ = e.total(), started_ = true;
-    present_.swap(now);
+    if (!started_) e0_ = e.total(), scale_ = e.translational + e.rotational + exchange, started_ = true;
+    const double removed_energy = sim.removed_energy();
+    const double gain = e.total() + removed_energy - e0_;
+    if (scale_ > 0 && gain > gain_limit_ * scale_) {
+      char msg[320];
+      std::snprintf(msg, sizeof msg, "t = %.6g s (step %llu): the energy rose %.3g J above its initial value, %.3g of "
+                    "the scale %.3g J (limit %.3g); nothing feeds energy in, so the time step is unstable",
+                    sim.time(), static_cast<unsigned long long>(sim.steps()), gain, gain / scale_, scale_, gain_limit_);
+      throw EnergyGain(msg);
+    }
+    max_gain_ = std::max(max_gain_, gain / scale_);
 
     const auto [vf, ee] = sim.contact_counts();
     const PenetrationReport pen = sim.take_penetration(limit_);
     out_ << sim.time() << ',' << st.size() << ',' << sim.removed_count() << ',' << e.translational << ','
-         << e.rotational << ',' << e.potential << ',' << e.total() << ',' << e0_ - e.total() - removed_energy_ << ','
+         << e.rotational << ',' << e.potential << ',' << e.total() << ',' << e0_ - e.total() - removed_energy << ','
          << vf << ',' << ee << ',' << pen.worst << ',' << pen.over << ',' << pen.worst_id << '\n';
     if (pen.over > 0 && warnings_++ < kMaxWarnings)
       std::printf("warning: t = %.6g s: %ld particles exceeded %.3g%% penetration since the last sample; deepest "
@@ -96,17 +109,18 @@ class RunLog {
   }
 
   double worst_penetration() const { return worst_; }
+  // Largest (E(t) + E_removed - E(0)) / scale over the samples written (<= 0: never above E(0)).
+  double max_energy_gain() const { return max_gain_; }
   long samples_over_limit() const { return over_samples_; }
 
  private:
   static constexpr long kMaxWarnings = 10;
   std::ofstream out_;
   std::string path_;
-  double limit_;
+  double limit_, gain_limit_;
   Vec3<Real> gravity_;
-  std::vector<double> energy_;
-  std::vector<char> present_;
-  double e0_ = 0, removed_energy_ = 0, worst_ = 0;
+  double height_;
+  double e0_ = 0, scale_ = 0, worst_ = 0, max_gain_ = -1e300;
   bool started_ = false;
   long warnings_ = 0, over_samples_ = 0;
   Index reported_removed_ = 0;

@@ -49,7 +49,7 @@ struct SimulationSnapshot {
   StoreSnapshot<Real> store;
   std::uint64_t steps = 0;
   Index initial_count = 0, removed_count = 0;
-  double removed_mass = 0;
+  double removed_mass = 0, removed_energy = 0;
 };
 
 template <class Space, class Shape, class Law, class Integrator, class Kinematics = ContactPointVelocity,
@@ -88,6 +88,7 @@ class Simulation {
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;
     removed_mass_ = snap.removed_mass;
+    removed_energy_ = snap.removed_energy;
     refresh_neighbours(steps_);
   }
 
@@ -95,13 +96,14 @@ class Simulation {
   // extra rebuild is part of the run's history: a run that writes checkpoints every T differs in
   // rounding from one that writes none, and a restart from any of them matches the former exactly.
   SimulationSnapshot<Real> snapshot() {
-    apply_removal(broad_.rebuild(store_, timer_, true));
+    apply_removal(broad_.rebuild(store_, timer_, params_.gravity, true));
     SimulationSnapshot<Real> out;
     out.store = store_.snapshot();
     out.steps = steps_;
     out.initial_count = initial_count_;
     out.removed_count = removed_count_;
     out.removed_mass = removed_mass_;
+    out.removed_energy = removed_energy_;
     return out;
   }
 
@@ -154,6 +156,8 @@ class Simulation {
   Index initial_count() const { return initial_count_; }
   Index removed_count() const { return removed_count_; }
   double removed_mass() const { return removed_mass_; }
+  // Translational kinetic + potential energy the removed particles had when they were removed, J.
+  double removed_energy() const { return removed_energy_; }
   std::uint64_t steps() const { return steps_; }
   double time() const { return static_cast<double>(steps_) * params_.dt; }
   std::uint64_t neighbour_builds() const { return broad_.builds(); }
@@ -224,12 +228,13 @@ class Simulation {
     timer_.time("rebuild-check", [&] { check = broad_.rebuild_check(store_); });
     if (check == 2) throw_non_finite(step);
     if (check == 0) return;
-    apply_removal(broad_.rebuild(store_, timer_));
+    apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
   }
   template <class Removed>
   void apply_removal(const Removed& removed) {
     removed_count_ += removed.count;
     removed_mass_ += removed.mass;
+    removed_energy_ += removed.energy;
   }
 
   [[noreturn]] void throw_non_finite(std::uint64_t step) const {
@@ -280,7 +285,7 @@ class Simulation {
   PhaseTimer<Space> timer_;
   Index initial_count_ = 0;
   Index removed_count_ = 0;
-  double removed_mass_ = 0;
+  double removed_mass_ = 0, removed_energy_ = 0;
   std::uint64_t steps_ = 0;
 };
 
