@@ -96,15 +96,18 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   auto run_phase = [&](Sim& sim, std::uint64_t k0, std::uint64_t k1, Index removed_before, bool last) {
     for (std::uint64_t k = k0; k < k1 || (last && k == k1); ++k) {
       const double t = static_cast<double>(k) * s.dt - gate_open;
-      if (k % csv_every == 0 || (last && k == k1)) {
+      const bool end = last && k == k1, csv_due = k % csv_every == 0 || end, vtu_due = k % vtu_every == 0 || end;
+      if (csv_due || vtu_due) {
         const auto st = sim.state();
-        const auto en = energies(st, sp.gravity);
-        const PenetrationReport pen = sim.take_penetration(s.output.penetration_warning);
-        over_limit += pen.over;
-        worst_penetration = std::max(worst_penetration, static_cast<double>(pen.worst));
-        csv << t << ',' << sim.removed_mass() << ',' << removed_before + sim.removed_count() << ',' << st.size() << ','
-            << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << '\n';
-        if (k % vtu_every == 0) {
+        if (csv_due) {
+          const auto en = energies(st, sp.gravity);
+          const PenetrationReport pen = sim.take_penetration(s.output.penetration_warning);
+          over_limit += pen.over;
+          worst_penetration = std::max(worst_penetration, static_cast<double>(pen.worst));
+          csv << t << ',' << sim.removed_mass() << ',' << removed_before + sim.removed_count() << ',' << st.size() << ','
+              << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << '\n';
+        }
+        if (vtu_due) {
           char name[64];
           std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
           write_particles_vtu(dir + "/" + name, st);
