@@ -3,6 +3,7 @@
 #   make test              CPU verification suite (+ compile-only check of the CUDA build)
 #   make test BACKEND=cuda verification suite on the GPU
 #   make bench             particle-steps/s and per-phase times (GPU if present)
+#   make bench-compare     the CPU backend against LIGGGHTS on the same sphere scene, same cores
 #   make test SANITIZE=1   the CPU suite built with AddressSanitizer + UndefinedBehaviorSanitizer (in build-sanitize/)
 #   make stress            the stress suite at full size (10^5 particles x 10^5 steps; GPU if present)
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
@@ -159,6 +160,9 @@ run: deps
 bench: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze_bench
 	$(BUILD)/$(RUN_BACKEND)/blaze_bench --out bench/results
+
+# make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
+include bench/compare/compare.mk
 
 clean:
 	rm -rf $(BUILD)

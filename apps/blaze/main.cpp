@@ -176,7 +176,15 @@ int run_scene(const Scene& s, const Options& o) {
                  "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
     return 3;
   };
-  for (std::uint64_t k = first;; ++k) try {
+  // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
+  // the GPU can batch them (Simulation::run).
+  const auto next_event = [&](std::uint64_t k) {
+    std::uint64_t next = steps;
+    for (std::uint64_t every_k : {csv_every, vtu_every, checkpoint_every})
+      if (every_k) next = std::min(next, (k / every_k + 1) * every_k);
+    return std::min(next, k + 10000);  // and the progress line now and then
+  };
+  for (std::uint64_t k = first;;) try {
     const bool resumed = k == first && first > 0;  // that sample is in the files already
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
@@ -199,8 +207,10 @@ int run_scene(const Scene& s, const Options& o) {
       }
     }
     if (k >= steps) break;  // (a restart may begin at or past the end)
-    sim.step();
-    particle_steps += static_cast<double>(sim.size());
+    const std::uint64_t next = next_event(k);
+    sim.run(next - k);
+    particle_steps += static_cast<double>(sim.size()) * static_cast<double>(next - k);
+    k = next;
     progress.update(sim.time(), particle_steps);
   } catch (const NonFiniteState& e) {
     return stop(e);

@@ -6,6 +6,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include "blaze/exec/primitives.hpp"
 #include "blaze/sim/phase_timer.hpp"
 #include "kernels/broad_phase_kernels.hpp"
@@ -43,6 +44,17 @@ class BroadPhase {
     const int code = reduce_max(Space{}, p.n,
                                 NeedsRebuild<Real>{grid_, p.position, field(reference_), h2}, 0);
     return builds_ == 0 && code == 0 ? 1 : code;
+  }
+
+  // The same check, max-combined into *out in the space's memory (no host round trip), and the
+  // check itself as a functor; both after the first build only.
+  void rebuild_check_into(ParticleStore<Real, Space>& store, int* out) {
+    reduce_max_into(Space{}, store.size(), rebuild_check_functor(store), out);
+  }
+  NeedsRebuild<Real> rebuild_check_functor(ParticleStore<Real, Space>& store) {
+    if (builds_ == 0) throw std::logic_error("broad phase: the rebuild check needs a first build");
+    const Real h = Real(0.5) * skin_;
+    return {grid_, store.view().position, field(reference_), h * h};
   }
 
   // with_forces: also move force and torque (a rebuild between steps, for a checkpoint).

@@ -44,7 +44,8 @@ inline ConvexShape parse_blaze_shape(std::istream& in, const std::string& source
       ++number;
       line = strip_comment(line);
       if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-      s = std::istringstream(line);
+      s.clear();  // reuse the stream (a move-assignment trips GCC 12's -Wstringop-overflow under ASan)
+      s.str(line);
       return true;
     }
     return false;

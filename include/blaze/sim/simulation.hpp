@@ -3,10 +3,14 @@
 //   -> post_force integrate
 // (thesis Algorithm 2.1). Shape, law, integrator, contact kinematics and features are policies.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <vector>
 #include "blaze/contact/kinematics.hpp"
+#include "blaze/exec/fused_steps.hpp"
 #include "blaze/grid/broad_phase.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/world/world.hpp"
@@ -57,6 +61,7 @@ template <class Space, class Shape, class Law, class Integrator, class Kinematic
 class Simulation {
  public:
   using Real = typename Law::real_type;
+  using features = Features;
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const ParticleState<Real>& particles, const Shape& shape = Shape{})
@@ -107,16 +112,35 @@ class Simulation {
     return out;
   }
 
+  // One step. Small systems (fused()) take it through the same one-launch kernel that batches use,
+  // so a trajectory is bitwise the same however its steps were grouped (on the GPU, the fused
+  // kernel and the per-phase kernels may round differently: the compiler contracts a*b + c into
+  // FMAs per kernel).
   void step() {
-    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::pre_force>()); });
+    if (fused()) return run_batched(1);
+    pre_force();
     refresh_neighbours(steps_ + 1);
     compute_forces();
-    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::post_force>()); });
+    post_force();
     ++steps_;
   }
+  // `steps` steps; bitwise the same as calling step() that many times (with the phase timer in the
+  // same state). Batched (see run_batched)
+  // where batching() is on: by default on the GPU up to kBatchMaxParticles, where the host round
+  // trip of each step's rebuild check is a large share of the step.
   void run(std::uint64_t steps) {
+    if (batching()) return run_batched(steps);
     for (std::uint64_t s = 0; s < steps; ++s) step();
   }
+  static constexpr Index kBatchMaxParticles = 1 << 21;  // marking costs ~100 B per particle per batch
+  bool batching() const {
+    return batching_ == 1 || (batching_ < 0 && !std::is_same_v<Space, Host> && store_.size() <= kBatchMaxParticles);
+  }
+  // Forces batching on or off (tests: the host backend checks the batched path the GPU uses).
+  void set_batching(bool on) { batching_ = on ? 1 : 0; }
+  // Steps of small systems run as one launch (fused_steps.hpp), unless the phase timer is on (the
+  // phases are then timed one by one).
+  bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
 
   ParticleState<Real> state() const {
     ParticleState<Real> s = store_.download();
@@ -222,6 +246,72 @@ class Simulation {
     return {shape_, store_.view(), params_.dt, {params_.gravity, params_.drag}};
   }
 
+  // A batch of K steps with no host round trip per step: each step's rebuild check is written to
+  // a device flag and the flags are read once, after the batch. If step j of the batch needed a
+  // rebuild (or found a non-finite position), the state is rewound to the batch's start, steps
+  // 0..j-1 are retaken (their neighbour lists were valid, and the kernels are deterministic, so
+  // they give the same bits) and step j is taken by step(), rebuild and all. K doubles after a
+  // clean batch up to kMaxBatch and falls to the steps a rebuild took otherwise, so the retaken
+  // steps stay a small share.
+  static constexpr std::uint64_t kMinBatch = 4, kMaxBatch = 256;
+  void run_batched(std::uint64_t steps) {
+    while (steps > 0) {
+      const std::uint64_t k = std::min(batch_, steps);
+      flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
+      for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
+      // Small systems: the whole batch in one launch, stopping at a flagged step (fused_steps.hpp);
+      // otherwise one launch per phase, rewound to the batch's start if a step was flagged. (With
+      // the phase timer on, phases are timed one by one.)
+      const bool one_launch = fused();
+      if (one_launch) {
+        prepare_statistics();
+        fused_steps(Space{}, store_.size(), k, integrate<Stage::pre_force>(), broad_.rebuild_check_functor(store_),
+                    contact_forces(), world_forces(), !world_.empty(), integrate<Stage::post_force>(), flags_.data());
+      } else {
+        store_.mark();
+        for (std::uint64_t s = 0; s < k; ++s) {
+          pre_force();
+          timer_.time("rebuild-check", [&] { broad_.rebuild_check_into(store_, flags_.data() + s); });
+          compute_forces();
+          post_force();
+        }
+      }
+      const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
+      const auto j = static_cast<std::uint64_t>(std::find_if(flags.begin(), flags.end(), [](int f) { return f != 0; }) - flags.begin());
+      if (j == k) {
+        steps_ += k;
+        steps -= k;
+        batch_ = std::min(2 * batch_, kMaxBatch);
+        continue;
+      }
+      if (one_launch) {  // stopped right after step j's pre phase: finish that step as step() does
+        steps_ += j;
+        refresh_neighbours(steps_ + 1);
+        compute_forces();
+        post_force();
+        ++steps_;
+      } else {
+        store_.rewind();
+        for (std::uint64_t s = 0; s < j; ++s) {
+          pre_force();
+          compute_forces();
+          post_force();
+        }
+        steps_ += j;
+        step();
+      }
+      steps -= j + 1;
+      batch_ = std::max(kMinBatch, j + 1);
+    }
+  }
+
+  void pre_force() {
+    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::pre_force>()); });
+  }
+  void post_force() {
+    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::post_force>()); });
+  }
+
   // `step`: the step being taken (0 before the first), for the NaN guard's message.
   void refresh_neighbours(std::uint64_t step) {
     int check = 0;
@@ -258,21 +348,24 @@ class Simulation {
       }
   }
 
-  void compute_forces() {
-    const ParticleView<Real> p = store_.view();
-    ContactStats stats{nullptr, nullptr};
+  void prepare_statistics() {
     if constexpr (Features::statistics) {
-      stats_vertex_face_.resize(std::max<std::size_t>(stats_vertex_face_.size(), p.n));
-      stats_edge_edge_.resize(std::max<std::size_t>(stats_edge_edge_.size(), p.n));
-      stats = {stats_vertex_face_.data(), stats_edge_edge_.data()};
+      stats_vertex_face_.resize(std::max<std::size_t>(stats_vertex_face_.size(), store_.size()));
+      stats_edge_edge_.resize(std::max<std::size_t>(stats_edge_edge_.size(), store_.size()));
     }
-    timer_.time("contacts", [&] {
-      for_each(Space{}, p.n, ContactForces<Shape, Law, Kinematics, Features>{shape_, p, broad_.neighbours(), laws_, stats});
-    });
-    if (!world_.empty())
-      timer_.time("walls", [&] {
-        for_each(Space{}, p.n, WorldForces<Shape, Law, Kinematics, Features>{shape_, p, world_.view(), laws_});
-      });
+  }
+  ContactForces<Shape, Law, Kinematics, Features> contact_forces() {
+    ContactStats stats{nullptr, nullptr};
+    if constexpr (Features::statistics) stats = {stats_vertex_face_.data(), stats_edge_edge_.data()};
+    return {shape_, store_.view(), broad_.neighbours(), laws_, stats};
+  }
+  WorldForces<Shape, Law, Kinematics, Features> world_forces() { return {shape_, store_.view(), world_.view(), laws_}; }
+
+  void compute_forces() {
+    prepare_statistics();
+    const Index n = store_.size();
+    timer_.time("contacts", [&] { for_each(Space{}, n, contact_forces()); });
+    if (!world_.empty()) timer_.time("walls", [&] { for_each(Space{}, n, world_forces()); });
   }
 
   Shape shape_;
@@ -283,6 +376,9 @@ class Simulation {
   WorldStore<Real, Space> world_;
   BroadPhase<Real, Space> broad_;
   PhaseTimer<Space> timer_;
+  Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)
+  std::uint64_t batch_ = kMinBatch;
+  int batching_ = -1;  // -1: by backend and size (batching())
   Index initial_count_ = 0;
   Index removed_count_ = 0;
   double removed_mass_ = 0, removed_energy_ = 0;
