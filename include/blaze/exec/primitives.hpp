@@ -1,8 +1,6 @@
 // Data-parallel primitives the pipeline needs beyond for_each:
 //   RadixSorter<Space>::sort_pairs  stable sort of (uint32 key, Index value) pairs by key
 //   reduce_max(space, n, f)         max over i of an int-valued functor f(i)
-//   reduce_max_into(space, n, f, out)  *out = max(*out, that max), out in the space's memory: no
-//                                   host round trip (the GPU batch of steps, simulation.hpp)
 // Cuda uses CUB (from the CUDA toolkit's CCCL) with scratch kept between calls, so the time-step
 // loop does not allocate. Host uses our own OpenMP LSD radix sort: CCCL is not a Debian package,
 // and a radix sort over bounded cell keys is O(N) where std::stable_sort is O(N log N).
@@ -105,11 +103,6 @@ int reduce_max(Host, Index n, const F& f, int init) {
   return result;
 }
 
-template <class F>
-void reduce_max_into(Host, Index n, const F& f, int* out) {
-  *out = reduce_max(Host{}, n, f, *out);
-}
-
 #if BLAZE_DEVICE_CODE
 template <>
 class RadixSorter<Cuda> {
@@ -157,13 +150,6 @@ int reduce_max(Cuda, Index n, const F& f, int init) {
   return read_one(slot.data(), Cuda{});
 }
 
-template <class F>
-void reduce_max_into(Cuda, Index n, const F& f, int* out) {
-  if (n <= 0) return;
-  const int blocks = std::min<Index>((n + kBlockSize - 1) / kBlockSize, 4096);
-  reduce_max_kernel<<<blocks, kBlockSize>>>(n, f, out);
-  cuda_check(cudaGetLastError(), "reduce_max_into launch");
-}
 #endif
 
 }  // namespace blaze

@@ -46,11 +46,7 @@ class BroadPhase {
     return builds_ == 0 && code == 0 ? 1 : code;
   }
 
-  // The same check, max-combined into *out in the space's memory (no host round trip), and the
-  // check itself as a functor; both after the first build only.
-  void rebuild_check_into(ParticleStore<Real, Space>& store, int* out) {
-    reduce_max_into(Space{}, store.size(), rebuild_check_functor(store), out);
-  }
+  // The same check as a functor (fused steps), after the first build only.
   NeedsRebuild<Real> rebuild_check_functor(ParticleStore<Real, Space>& store) {
     if (builds_ == 0) throw std::logic_error("broad phase: the rebuild check needs a first build");
     const Real h = Real(0.5) * skin_;

@@ -145,21 +145,6 @@ class ParticleStore {
     scratch_real_.resize(n_);
   }
 
-  // A copy, in the same memory, of every field a step writes; rewind() puts it back. For a batch
-  // of steps that may have to be retaken (Simulation::run). Invalid after a permute or truncate.
-  void mark() {
-    const auto fields = stepped_fields();
-    marked_.resize(fields.size());
-    for (std::size_t k = 0; k < fields.size(); ++k) {
-      marked_[k].resize(fields[k]->size() ? n_ : 0);
-      copy_n(fields[k]->data(), marked_[k].size(), marked_[k].data(), Space{}, Space{});
-    }
-  }
-  void rewind() {
-    const auto fields = stepped_fields();
-    for (std::size_t k = 0; k < fields.size(); ++k) copy_n(marked_[k].data(), marked_[k].size(), fields[k]->data(), Space{}, Space{});
-  }
-
   Index size() const { return n_; }
   // Drops the particles [n, size) (they were sorted to the end).
   void truncate(Index n) { n_ = n; }
@@ -224,13 +209,6 @@ class ParticleStore {
     if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
     return f;
   }
-  // The fields a step writes: all real fields but radius, inverse mass and inverse inertia.
-  std::vector<Buffer<Real, Space>*> stepped_fields() {
-    std::vector<Buffer<Real, Space>*> f;
-    for (auto* b : real_fields())
-      if (b != &radius_ && b != &inv_mass_ && b != &inv_inertia_) f.push_back(b);
-    return f;
-  }
   template <class T>
   void permute_one(Buffer<T, Space>& f, Buffer<T, Space>& scratch, const Index* perm) {
     scratch.resize(f.size());
@@ -250,7 +228,6 @@ class ParticleStore {
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;
   Buffer<std::uint8_t, Space> scratch_u8_;
-  std::vector<Buffer<Real, Space>> marked_;  // mark() / rewind()
   Buffer<Index, Space> scratch_index_;
 };
 

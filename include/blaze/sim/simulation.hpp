@@ -125,21 +125,14 @@ class Simulation {
     ++steps_;
   }
   // `steps` steps; bitwise the same as calling step() that many times (with the phase timer in the
-  // same state). Batched (see run_batched)
-  // where batching() is on: by default on the GPU up to kBatchMaxParticles, where the host round
-  // trip of each step's rebuild check is a large share of the step.
+  // same state). Small systems (fused()) run them in batches (run_batched).
   void run(std::uint64_t steps) {
-    if (batching()) return run_batched(steps);
+    if (fused()) return run_batched(steps);
     for (std::uint64_t s = 0; s < steps; ++s) step();
   }
-  static constexpr Index kBatchMaxParticles = 1 << 21;  // marking costs ~100 B per particle per batch
-  bool batching() const {
-    return batching_ == 1 || (batching_ < 0 && !std::is_same_v<Space, Host> && store_.size() <= kBatchMaxParticles);
-  }
-  // Forces batching on or off (tests: the host backend checks the batched path the GPU uses).
-  void set_batching(bool on) { batching_ = on ? 1 : 0; }
-  // Steps of small systems run as one launch (fused_steps.hpp), unless the phase timer is on (the
-  // phases are then timed one by one).
+  // Steps of small systems run as one launch per batch (fused_steps.hpp), unless the phase timer
+  // is on (the phases are then timed one by one). Larger systems take one launch per phase and
+  // one host round trip per step (the rebuild check), a small share of their step.
   bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
 
   ParticleState<Real> state() const {
@@ -246,60 +239,32 @@ class Simulation {
     return {shape_, store_.view(), params_.dt, {params_.gravity, params_.drag}};
   }
 
-  // A batch of K steps with no host round trip per step: each step's rebuild check is written to
-  // a device flag and the flags are read once, after the batch. If step j of the batch needed a
-  // rebuild (or found a non-finite position), the state is rewound to the batch's start, steps
-  // 0..j-1 are retaken (their neighbour lists were valid, and the kernels are deterministic, so
-  // they give the same bits) and step j is taken by step(), rebuild and all. K doubles after a
-  // clean batch up to kMaxBatch and falls to the steps a rebuild took otherwise, so the retaken
-  // steps stay a small share.
+  // A batch of K steps in one launch with no host round trip per step: each step's rebuild check
+  // is written to a device flag and the batch stops at the first step whose flag is set (it needs
+  // a rebuild, or found a non-finite position), just after that step's pre phase; the flags are
+  // read once. That step is then finished as step() would (rebuild, or the NaN report). K doubles
+  // after a clean batch up to kMaxBatch and falls to the steps a rebuild took otherwise.
   static constexpr std::uint64_t kMinBatch = 4, kMaxBatch = 256;
   void run_batched(std::uint64_t steps) {
     while (steps > 0) {
       const std::uint64_t k = std::min(batch_, steps);
       flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
-      // Small systems: the whole batch in one launch, stopping at a flagged step (fused_steps.hpp);
-      // otherwise one launch per phase, rewound to the batch's start if a step was flagged. (With
-      // the phase timer on, phases are timed one by one.)
-      const bool one_launch = fused();
-      if (one_launch) {
-        prepare_statistics();
-        fused_steps(Space{}, store_.size(), k, integrate<Stage::pre_force>(), broad_.rebuild_check_functor(store_),
-                    contact_forces(), world_forces(), !world_.empty(), integrate<Stage::post_force>(), flags_.data());
-      } else {
-        store_.mark();
-        for (std::uint64_t s = 0; s < k; ++s) {
-          pre_force();
-          timer_.time("rebuild-check", [&] { broad_.rebuild_check_into(store_, flags_.data() + s); });
-          compute_forces();
-          post_force();
-        }
-      }
+      prepare_statistics();
+      fused_steps(Space{}, store_.size(), k, integrate<Stage::pre_force>(), broad_.rebuild_check_functor(store_),
+                  contact_forces(), world_forces(), !world_.empty(), integrate<Stage::post_force>(), flags_.data());
       const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
       const auto j = static_cast<std::uint64_t>(std::find_if(flags.begin(), flags.end(), [](int f) { return f != 0; }) - flags.begin());
+      steps_ += j;
       if (j == k) {
-        steps_ += k;
         steps -= k;
         batch_ = std::min(2 * batch_, kMaxBatch);
         continue;
       }
-      if (one_launch) {  // stopped right after step j's pre phase: finish that step as step() does
-        steps_ += j;
-        refresh_neighbours(steps_ + 1);
-        compute_forces();
-        post_force();
-        ++steps_;
-      } else {
-        store_.rewind();
-        for (std::uint64_t s = 0; s < j; ++s) {
-          pre_force();
-          compute_forces();
-          post_force();
-        }
-        steps_ += j;
-        step();
-      }
+      refresh_neighbours(steps_ + 1);  // step j, from just after its pre phase
+      compute_forces();
+      post_force();
+      ++steps_;
       steps -= j + 1;
       batch_ = std::max(kMinBatch, j + 1);
     }
@@ -378,7 +343,6 @@ class Simulation {
   PhaseTimer<Space> timer_;
   Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)
   std::uint64_t batch_ = kMinBatch;
-  int batching_ = -1;  // -1: by backend and size (batching())
   Index initial_count_ = 0;
   Index removed_count_ = 0;
   double removed_mass_ = 0, removed_energy_ = 0;
