@@ -4,6 +4,7 @@
 #   make test BACKEND=cuda verification suite on the GPU
 #   make bench             particle-steps/s and per-phase times (GPU if present)
 #   make bench-compare     the CPU backend against LIGGGHTS on the same sphere scene, same cores
+#   make table-3.3         the thesis's Table 3.3 (Cundall numbers) with Blaze's rows -> bench/table-3.3.md
 #   make test SANITIZE=1   the CPU suite built with AddressSanitizer + UndefinedBehaviorSanitizer (in build-sanitize/)
 #   make stress            the stress suite at full size (10^5 particles x 10^5 steps; GPU if present)
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
@@ -160,6 +161,11 @@ run: deps
 bench: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze_bench
 	$(BUILD)/$(RUN_BACKEND)/blaze_bench --out bench/results
+
+# Thesis Table 3.3 (Cundall numbers) with Blaze's rows from the committed GPU results.
+.PHONY: table-3.3
+table-3.3:
+	python3 tools/table_3_3.py bench/results
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk
