@@ -37,6 +37,17 @@ BOOST_AUTO_TEST_CASE(readme_example_is_the_shipped_scene) {
   BOOST_TEST(run("run data/scenes/cubes_in_drum.toml --check").status == 0);
 }
 
+// The progress line is for a terminal: with stderr in a pipe (as here) a run prints none, even
+// without --quiet, and still reports its summary.
+BOOST_AUTO_TEST_CASE(no_progress_line_when_not_a_terminal) {
+  const fs::path dir = fs::temp_directory_path() / "blaze_run_progress";
+  const Result r = run("run data/scenes/box_fill.toml --set end_time=0.002 --set output.directory=" + dir.string());
+  BOOST_TEST(r.status == 0, r.output);
+  BOOST_TEST(r.output.find("ETA") == std::string::npos, r.output);
+  BOOST_TEST(r.output.find("done: ") != std::string::npos, r.output);
+  fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_CASE(rejected_scene_exits_1_naming_the_place) {
   const Result r = run("run data/scenes/box_fill.toml --check --set pair[0].restitution=0");
   BOOST_TEST(r.status == 1);
