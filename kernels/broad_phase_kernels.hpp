@@ -17,6 +17,11 @@ struct NeighbourView {
   Index* count;
   Index stride;
   Index capacity;
+  // Entry k of particle i; the offset is taken in 64 bits (capacity x N passes 2^31 above ~1e8
+  // particles).
+  BLAZE_HD Index& at(Index k, Index i) const {
+    return index[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
+  }
 };
 
 // Line 1: key = cell hash (eq. 2.1), or the outside key for particles that left the domain.
@@ -80,7 +85,7 @@ struct BuildNeighbours {
             if (static_cast<Index>(j) == i) continue;
             const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i)
             if (norm2(position.get(static_cast<Index>(j)) - xi) < reach * reach) {
-              if (count < list.capacity) list.index[count * list.stride + i] = static_cast<Index>(j);
+              if (count < list.capacity) list.at(count, i) = static_cast<Index>(j);
               ++count;
             }
           }

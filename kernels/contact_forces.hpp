@@ -40,7 +40,7 @@ struct ContactForces {
     Real deepest = 0;
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
-      const Index j = list.index[k * list.stride + i];
+      const Index j = list.at(k, i);
       const auto bj = shape.body(p, j);
       ContactGeometry<Real> g;
       if (i < j) {

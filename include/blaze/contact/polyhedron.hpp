@@ -56,13 +56,35 @@ struct ThesisNormal {
 
 namespace polyhedron_detail {
 
-// Do the Gauss-map arcs (a, b) and (c, d) cross? (a, b: normals beside an edge of A; c, d: the
-// negated normals beside an edge of B.) Then the edge pair is a face of the Minkowski difference.
+// Which edge pairs are faces of the Minkowski difference A - B? Edge ea of A (normals a, b beside
+// it) and edge eb of B (negated normals c, d beside it) qualify when their Gauss-map arcs cross:
+//   (c.(b x a)) (d.(b x a)) < 0,  (a.(d x c)) (b.(d x c)) < 0,  (c.(b x a)) (b.(d x c)) > 0.
+// Only signs matter, and each depends on one edge and one face, so they are taken as bit sets
+// over B's edges (issue 6: testing the arcs pair by pair was most of a packed polyhedron step):
+//   for each face g of A: the edges eb with n_A[g].(n_B1 x n_B0) > 0 (pos[g]) or < 0 (neg[g])
+//     (d x c = n_B1 x n_B0, as c = -n_B0, d = -n_B1);
+//   for edge ea: s_f = sign(n_B[f].(b x a)) for each face f of B (c.(b x a) = -s_0), turned into
+//     edge sets through the table's edges_left_of / edges_right_of.
+// Then the candidates of ea are one AND-OR expression, visited in increasing eb as before.
+struct ArcSets {
+  std::uint64_t pos[kMaxFaces], neg[kMaxFaces];  // over B's edges, per face of A
+};
+// B-edge sets for edge ea of A, from the signs s_f (b x a = axis): left_pos = edges whose left
+// face has s > 0, and so on.
 template <class Real>
-BLAZE_HD inline bool arcs_cross(const Vec3<Real>& a, const Vec3<Real>& b, const Vec3<Real>& c, const Vec3<Real>& d) {
-  const Vec3<Real> bxa = cross(b, a), dxc = cross(d, c);
-  const Real cba = dot(c, bxa), dba = dot(d, bxa), adc = dot(a, dxc), bdc = dot(b, dxc);
-  return cba * dba < Real(0) && adc * bdc < Real(0) && cba * bdc > Real(0);
+BLAZE_HD inline std::uint64_t crossing_edges(const PolyhedronData<Real>& B, const Vec3<Real>* nb, const Vec3<Real>& axis,
+                                            const ArcSets& sets, int fa0, int fa1) {
+  std::uint64_t left_pos = 0, left_neg = 0, right_pos = 0, right_neg = 0;
+  for (int f = 0; f < B.face_count; ++f) {
+    const Real s = dot(nb[f], axis);
+    if (s > Real(0)) left_pos |= B.edges_left_of[f], right_pos |= B.edges_right_of[f];
+    if (s < Real(0)) left_neg |= B.edges_left_of[f], right_neg |= B.edges_right_of[f];
+  }
+  const std::uint64_t opposite_b = (left_pos & right_neg) | (left_neg & right_pos);
+  const std::uint64_t opposite_a = (sets.pos[fa0] & sets.neg[fa1]) | (sets.neg[fa0] & sets.pos[fa1]);
+  // c.(b x a) = -s_left and b.(d x c) have the same sign: s_left > 0 with neg[fa1], or < 0 with pos[fa1].
+  const std::uint64_t same_sign = (left_pos & sets.neg[fa1]) | (left_neg & sets.pos[fa1]);
+  return opposite_b & opposite_a & same_sign;
 }
 
 // Midpoint of the closest points of segments p0 + s u and q0 + t w, s, t in [0, 1].
@@ -205,12 +227,24 @@ struct PolyhedronShape {
     Real edge_best = -reach;
     int edge_a = -1, edge_b = -1;
     Vec3<Real> edge_axis{0, 0, 0};
+    ArcSets sets;
+    for (int g = 0; g < A.face_count; ++g) sets.pos[g] = sets.neg[g] = 0;
+    for (int eb = 0; eb < B.edge_count; ++eb) {
+      const Vec3<Real> dxc = cross(nb[B.edge_face[eb][1]], nb[B.edge_face[eb][0]]);
+      const std::uint64_t bit = std::uint64_t(1) << eb;
+      for (int g = 0; g < A.face_count; ++g) {
+        const Real s = dot(A.normal[g], dxc);
+        if (s > Real(0)) sets.pos[g] |= bit;
+        if (s < Real(0)) sets.neg[g] |= bit;
+      }
+    }
     for (int ea = 0; ea < A.edge_count; ++ea) {
       const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
       const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;
-      const Vec3<Real> na1 = A.normal[A.edge_face[ea][0]], na2 = A.normal[A.edge_face[ea][1]];
-      for (int eb = 0; eb < B.edge_count; ++eb) {
-        if (!arcs_cross(na1, na2, -nb[B.edge_face[eb][0]], -nb[B.edge_face[eb][1]])) continue;
+      const int fa0 = A.edge_face[ea][0], fa1 = A.edge_face[ea][1];
+      for (std::uint64_t todo = crossing_edges(B, nb, cross(A.normal[fa1], A.normal[fa0]), sets, fa0, fa1); todo != 0;
+           todo &= todo - 1) {
+        const int eb = lowest_bit(todo);
         const Vec3<Real> b0 = vb[B.edge_vertex[eb][0]];
         const Vec3<Real> db = vb[B.edge_vertex[eb][1]] - b0;
         Vec3<Real> n = cross(da, db);

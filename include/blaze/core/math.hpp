@@ -2,6 +2,7 @@
 // (Unqualified ::sqrt(float) would silently widen to double on the host.)
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include "blaze/config.hpp"
 
 namespace blaze {
@@ -23,6 +24,14 @@ template <class T>
 BLAZE_HD constexpr T max_r(T a, T b) { return a < b ? b : a; }
 template <class T>
 BLAZE_HD constexpr T clamp_r(T x, T lo, T hi) { return min_r(max_r(x, lo), hi); }
+// Index of the lowest set bit of x != 0 (bit sets of polyhedron features).
+BLAZE_HD inline int lowest_bit(std::uint64_t x) {
+#if defined(__CUDA_ARCH__)
+  return __ffsll(static_cast<long long>(x)) - 1;
+#else
+  return __builtin_ctzll(x);
+#endif
+}
 // False for NaN and +-Inf (x - x is NaN for both); valid without -ffast-math, which Blaze never uses.
 template <class T>
 BLAZE_HD constexpr bool finite_r(T x) { return (x - x) == T(0); }

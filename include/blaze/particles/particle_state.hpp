@@ -23,6 +23,10 @@ struct ParticleState {
   std::vector<Index> id;                    // stable identity, survives re-sorting
 
   std::size_t size() const { return position.size(); }
+  void reserve(std::size_t n) {  // large scenes: no regrowth copies
+    position.reserve(n), velocity.reserve(n), angular_velocity.reserve(n), orientation.reserve(n), radius.reserve(n);
+    mass.reserve(n), inertia.reserve(n), material.reserve(n), type.reserve(n), id.reserve(n);
+  }
 
   // A solid sphere of uniform density (kg/m^3).
   void add_sphere(const Vec3<Real>& x, Real r, Real density, std::uint8_t mat,

@@ -46,6 +46,7 @@ Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, co
   const double extent = (side - 1 + (fcc ? 0.5 : 0.0)) * cell;
   const double half = 0.5 * extent + wall_gap;
   Packing<Real> p;
+  p.particles.reserve(static_cast<std::size_t>(n));
   double top = 0;
   for (int k = 0; k < n; ++k) {
     const int site = k % per_cell, c = k / per_cell;

@@ -18,6 +18,9 @@ struct PolyhedronData {
   Real offset[kMaxFaces];           // m: a point x is inside face f's half-space when normal.x <= offset
   std::uint8_t edge_vertex[kMaxEdges][2];
   std::uint8_t edge_face[kMaxEdges][2];  // faces left and right of the edge (ConvexShape::Edge)
+  // Bit e set: edge e has face f as its edge_face[e][0] (edges_left_of) / [1] (edges_right_of).
+  // A convex polyhedron within the caps has E = V + F - 2 <= 62 edges, so 64 bits hold them.
+  std::uint64_t edges_left_of[kMaxFaces], edges_right_of[kMaxFaces];
   int vertex_count, face_count, edge_count;  // all 0: a sphere of radius bounding_radius
   Real bounding_radius;    // m (bound_R)
   Real volume;             // m^3
@@ -35,11 +38,16 @@ struct PolyhedronData {
       d.normal[f] = to_vec(s.normals[f]);
       d.offset[f] = static_cast<Real>(s.normals[f].dot(s.centroids[f]));
     }
+    if (d.edge_count > 64)
+      throw std::invalid_argument("polyhedron " + s.name + ": " + std::to_string(d.edge_count) +
+                                  " edges; a convex polyhedron of <= 32 vertices and faces has <= 62");
     for (int e = 0; e < d.edge_count; ++e) {
       d.edge_vertex[e][0] = static_cast<std::uint8_t>(s.edges[e].v0);
       d.edge_vertex[e][1] = static_cast<std::uint8_t>(s.edges[e].v1);
       d.edge_face[e][0] = static_cast<std::uint8_t>(s.edges[e].left);
       d.edge_face[e][1] = static_cast<std::uint8_t>(s.edges[e].right);
+      d.edges_left_of[s.edges[e].left] |= std::uint64_t(1) << e;
+      d.edges_right_of[s.edges[e].right] |= std::uint64_t(1) << e;
     }
     d.bounding_radius = static_cast<Real>(s.bounding_radius);
     d.volume = static_cast<Real>(s.volume);

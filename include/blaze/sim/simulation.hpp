@@ -112,6 +112,11 @@ class Simulation {
     return out;
   }
 
+  // Rebuilds the neighbour list now (hash, sort, reorder, cells and list), as a step does when a
+  // particle has moved half the skin (forces and torques move along, as between steps they are
+  // still needed); benchmarks time the broad phase with it.
+  void rebuild_neighbours() { apply_removal(broad_.rebuild(store_, timer_, params_.gravity, true)); }
+
   // One step. Small systems (fused()) take it through the same one-launch kernel that batches use,
   // so a trajectory is bitwise the same however its steps were grouped (on the GPU, the fused
   // kernel and the per-phase kernels may round differently: the compiler contracts a*b + c into

@@ -1,0 +1,244 @@
+// The benchmark scenes of make bench (bench.cpp runs them): each builds a scene, a simulation,
+// and measures it (measure: warm-up, an unfenced timed stretch for the throughput, a fenced
+// stretch for the phase split, three timed neighbour-list rebuilds).
+#pragma once
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+#include "blaze/contact/sphere.hpp"
+#include "blaze/laws/hertz.hpp"
+#include "blaze/laws/history_free_friction.hpp"
+#include "blaze/laws/linear_spring_dashpot.hpp"
+#include "blaze/scenes/gravity_packing.hpp"
+#include "blaze/scenes/polyhedron_packing.hpp"
+#include "blaze/shapes/shape_io.hpp"
+
+
+namespace blaze::bench {
+
+constexpr double kPi = 3.14159265358979323846, kRadius = 1e-3, kDensity = 2500, kStiffness = 1e4;
+const char* kPhases[] = {"rebuild-check", "hash", "sort", "reorder", "neighbours", "contacts", "walls", "integrate"};
+
+struct Row {
+  std::string shape, law, precision;
+  std::string scene;  // dense-bed, free-fall, packed, no-walls, mill
+  long n = 0, steps = 0;
+  double rate = 0, bytes_per_particle = 0;  // particle-steps/s
+  double steps_per_s() const { return rate / static_cast<double>(n); }
+  std::uint64_t builds = 0;
+  Index capacity = 0;
+  double neighbours = 0, contacts = 0;  // per particle, at the end of the timed stretch
+  double edge_fraction = 0;             // edge-edge share of the contacts (thesis Fig 3.27)
+  std::vector<double> phase_ms;         // per step
+  int surfaces = 0;                     // world surfaces (planar polygons + cylinders)
+  double rebuild_ms = 0;                // one broad-phase rebuild: hash + sort + reorder + cells and list
+};
+
+template <class Law>
+Law make_law();
+template <>
+ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction> make_law() {
+  return {LinearSpringDashpot<float>::from_restitution(kStiffness, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
+}
+template <>
+ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction> make_law() {
+  return {LinearSpringDashpot<double>::from_restitution(kStiffness, 0.5), HistoryFreeFriction<double>::make(0.4, 0.05)};
+}
+template <>
+ContactLaw<float, LinearSpringDashpot, NoFriction> make_law() {
+  return {LinearSpringDashpot<float>::from_restitution(kStiffness, 0.5), {}};
+}
+template <>
+ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
+  // K_n such that a contact at 1 m/s lasts as long as the linear one (t_c = 2.94 delta_max / v).
+  return {Hertz<float>::from_stiffness(2.3e6, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
+}
+
+double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
+
+std::string skin_tag() {
+  if (g_skin_fraction == 0.2) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "-skin%g", g_skin_fraction);
+  return buf;
+}
+
+// Warm-up, then the timed stretch, then the fenced stretch for the phase split, then three
+// rebuilds of the neighbour list timed alone (the broad phase per rebuild).
+template <class Sim>
+Row measure(Sim& sim, const char* shape, const char* law_name, const char* precision, const char* scene, int surfaces,
+            long warmup, long steps) {
+  sim.run(static_cast<std::uint64_t>(warmup));
+  fence(DefaultSpace{});
+  const auto builds0 = sim.neighbour_builds();
+  const auto t0 = std::chrono::steady_clock::now();
+  sim.run(static_cast<std::uint64_t>(steps));
+  fence(DefaultSpace{});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Row row{shape, law_name, precision, scene, sim.size(), steps,
+          static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
+          static_cast<double>(sim.memory_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
+          sim.neighbour_capacity(), 0, 0, 0, {}, surfaces, 0};
+  const auto nl = sim.neighbour_lists();
+  long listed = 0;
+  for (Index c : nl.count) listed += c;
+  row.neighbours = static_cast<double>(listed) / static_cast<double>(sim.size());
+  sim.timer().enabled = true;
+  sim.timer().reset();
+  const long phase_steps = std::max(10L, steps / 4);
+  sim.run(static_cast<std::uint64_t>(phase_steps));
+  const auto phase_seconds = [&](const char* ph) {
+    const auto it = sim.timer().seconds().find(ph);
+    return it == sim.timer().seconds().end() ? 0.0 : it->second;
+  };
+  for (const char* ph : kPhases) row.phase_ms.push_back(1e3 * phase_seconds(ph) / phase_steps);
+  if constexpr (Sim::features::statistics) {  // from the last step of the fenced stretch
+    const auto [vertex_face, edge_edge] = sim.contact_counts();
+    row.contacts = 2.0 * static_cast<double>(vertex_face + edge_edge) / static_cast<double>(sim.size());
+    row.edge_fraction = vertex_face + edge_edge > 0 ? static_cast<double>(edge_edge) / static_cast<double>(vertex_face + edge_edge) : 0;
+  }
+  sim.timer().reset();
+  for (int k = 0; k < 3; ++k) sim.rebuild_neighbours();
+  for (const char* ph : {"hash", "sort", "reorder", "neighbours"}) row.rebuild_ms += 1e3 * phase_seconds(ph) / 3;
+  sim.timer().enabled = false;
+  return row;
+}
+
+using Stats = FeatureSet<true, true>;
+
+template <class Law, class Features = Stats>
+Row sphere_case(const char* law_name, long n, long warmup, long steps) {
+  using Real = typename Law::real_type;
+  const double m = kDensity * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius;
+  const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
+  // Dense bed: fcc at 0.99 of contact spacing, radii +-0.5%: every neighbour pair overlaps by
+  // 0-2% of a radius, held by six walls.
+  auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
+  scene.params.skin = static_cast<Real>(g_skin_fraction * kRadius);
+  PairTable<Law> laws;
+  laws.set(0, 0, make_law<Law>());
+  laws.set(0, 1, make_law<Law>());
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Features> sim(scene.params, laws, scene.world,
+                                                                                                  scene.particles);
+  scene.particles = {};  // the largest runs need the host memory back
+  return measure(sim, "sphere", law_name, sizeof(Real) == 4 ? "float" : "double", "dense-bed", 6, warmup, steps);
+}
+
+// Feature skipping: a frictionless bed that needs no walls and no gravity (fcc at 0.999 of the
+// contact spacing, radii +-0.05%: every neighbour pair overlaps by ~0.1% of a radius and the bed
+// barely moves over the timed steps), run by the full-feature build (rotation, the friction law
+// with mu = 0) and by the build that compiles rotation and friction out. Same scene, same forces.
+template <class Law, class Features>
+Row skip_case(const char* label, long n, long warmup, long steps) {
+  const double m = kDensity * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius;
+  const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
+  auto scene = gravity_packing<float>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.998, 0.0005, 0.01, true});
+  scene.world = {};
+  scene.params.gravity = {0, 0, 0};
+  scene.params.skin = static_cast<float>(g_skin_fraction * kRadius);
+  Law law = make_law<Law>();
+  if constexpr (std::is_same_v<decltype(law.tangential), HistoryFreeFriction<float>>) law.tangential.mu = 0;
+  PairTable<Law> laws;
+  laws.set(0, 0, law);
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Features> sim(scene.params, laws, scene.world,
+                                                                                                  scene.particles);
+  return measure(sim, label, "linear", "float", "no-walls", 0, warmup, steps);
+}
+
+// The thesis's lab mill (section 4.2.1): a 90 cm x 15 cm steel drum (the inner cylinder plus two
+// octagonal end plates covering its faces), 242 steel balls of r = 2.5 cm (30% filling), e =
+// 0.825, mu = 0.15 (its calibrated combination 3), dt = 4.14e-5 s (its eq. 4.4 limit); k = 2e6 N/m
+// puts dt at 0.06 of the critical step. The drum does not rotate yet (mills come later): the
+// balls drop from a lattice, settle over the warm-up, then the bed is timed.
+Row mill_case(long warmup, long steps) {
+  using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
+  using V = Vec3<double>;
+  const double r = 0.025, rho = 7800, drum_r = 0.45, length = 0.15, dt = 4.14e-5;
+  ParticleState<float> balls;
+  for (int layer = 0; layer < 2; ++layer)
+    for (int iy = 0; iy < 11; ++iy)
+      for (int ix = 0; ix < 11; ++ix)
+        balls.add_sphere(Vec3<float>{float(-0.275 + 0.055 * ix), float(-0.275 + 0.055 * iy), float(0.045 + 0.06 * layer)},
+                         float(r), float(rho), 0, Vec3<float>{0, 0, 0});
+  World<float> world;
+  world.cylinders.push_back(Cylinder<float>::make(V{0, 0, 0}, V{0, 0, 1}, drum_r, length, 1));
+  const double rc = drum_r / std::cos(kPi / 8);  // the octagon's circumradius: it covers the disc
+  std::vector<V> front, back;
+  for (int k = 0; k < 8; ++k) {
+    const double a = kPi / 8 + k * kPi / 4;
+    front.push_back({rc * std::cos(a), rc * std::sin(a), 0});  // counter-clockwise seen from +z: normal +z
+    back.push_back({rc * std::cos(-a), rc * std::sin(-a), length});
+  }
+  world.polygons.push_back(PlanarPolygon<float>::make(front, 1, 0u));
+  world.polygons.push_back(PlanarPolygon<float>::make(back, 1, 0u));
+  const SimulationParams<float> params{float(dt), {0, -9.81f, 0}, {-0.5f, -0.5f, -0.05f}, {0.5f, 0.5f, 0.2f},
+                                       float(g_skin_fraction * r)};
+  const Law law{LinearSpringDashpot<float>::from_restitution(2e6, 0.825), HistoryFreeFriction<float>::make(0.15, 100)};
+  PairTable<Law> laws;
+  laws.set(0, 0, law);
+  laws.set(0, 1, law);
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(params, laws, world, balls);
+  Row row = measure(sim, "mill-242", "linear", "float", "mill", 3, warmup, steps);
+  if (sim.removed_count() != 0) std::printf("WARNING: %d balls left the mill\n", static_cast<int>(sim.removed_count()));
+  return row;
+}
+
+// The floor (the world's first polygon, a quadrilateral) split into tiles x tiles quadrilaterals
+// with its orientation: more world surfaces, the same contacts (thesis Fig 3.21).
+template <class Real>
+void tile_floor(World<Real>& world, int tiles) {
+  using V = Vec3<double>;
+  const PlanarPolygon<Real> floor = world.polygons.front();
+  V c[4];
+  for (int k = 0; k < 4; ++k) c[k] = vec_cast<double>(floor.vertex[k]);
+  const auto at = [&](double s, double t) { return c[0] + s * (c[1] - c[0]) + t * (c[3] - c[0]); };
+  world.polygons.erase(world.polygons.begin());
+  for (int i = 0; i < tiles; ++i)
+    for (int j = 0; j < tiles; ++j) {
+      const double s0 = double(i) / tiles, s1 = double(i + 1) / tiles, t0 = double(j) / tiles, t1 = double(j + 1) / tiles;
+      world.polygons.push_back(PlanarPolygon<Real>::make({at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1)}, floor.material));
+    }
+}
+
+enum class PolyScene { free_fall, packed };
+
+// Polyhedra of one shape (about 1 cm), linear law (k = 1e5 N/m, e = 0.5), float, dt = t_c/25.
+// free_fall: random orientations falling from a loose lattice in a box (thesis section 3.4.1's
+// benchmark); packed: packed_polyhedra, every body pressed on its six axial neighbours.
+// table_in_memory: read the shape table from device memory instead of the kernel arguments.
+// floor_tiles > 1: the floor as floor_tiles^2 polygons (world-surface scaling).
+Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, bool table_in_memory = false,
+                    int floor_tiles = 1) {
+  using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
+  PolyhedronShape<float> shape;
+  const ConvexShape convex = load_shape(std::string("data/shapes/") + shape_name + ".shape");
+  shape.table.add(convex, kDensity);
+  const double k = 1e5, dt = kPi * std::sqrt(0.5 * shape.table.type[0].mass / k) / 25;
+  const Eigen::Quaterniond drawn(convex.axes_in_input);  // the file's orientation
+  auto scene = kind == PolyScene::packed
+                   ? packed_polyhedra(shape.table, 0, static_cast<int>(n), 42, dt, Quat<double>{drawn.w(), drawn.x(), drawn.y(), drawn.z()})
+                                         : polyhedron_packing(shape.table, 0, static_cast<int>(n), 42, dt);
+  if (floor_tiles > 1) tile_floor(scene.world, floor_tiles);
+  scene.params.skin = static_cast<float>(g_skin_fraction * shape.table.type[0].bounding_radius);
+  const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
+  PairTable<Law> laws;
+  laws.set(0, 0, law);
+  laws.set(0, 1, law);
+  Buffer<PolyhedronTable<float>, DefaultSpace> table_copy(1);
+  if (table_in_memory) {
+    copy_n(&shape.table, 1, table_copy.data(), Host{}, DefaultSpace{});
+    shape.table_in_memory = table_copy.data();
+  }
+  const int surfaces = static_cast<int>(scene.world.polygons.size() + scene.world.cylinders.size());
+  Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(
+      scene.params, laws, scene.world, std::move(scene.particles), shape);
+  const std::string label = std::string(shape_name) + (table_in_memory ? "@mem" : "");
+  Row row = measure(sim, label.c_str(), "linear", "float", kind == PolyScene::packed ? "packed" : "free-fall", surfaces, warmup, steps);
+  if (sim.removed_count() != 0) std::printf("WARNING: %d bodies left the box\n", static_cast<int>(sim.removed_count()));
+  return row;
+}
+
+}  // namespace blaze::bench
