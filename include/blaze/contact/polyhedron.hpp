@@ -56,6 +56,15 @@ struct ThesisNormal {
 
 namespace polyhedron_detail {
 
+// Do the Gauss-map arcs (a, b) and (c, d) cross? (a, b: normals beside an edge of A; c, d: the
+// negated normals beside an edge of B.) Then the edge pair is a face of the Minkowski difference.
+template <class Real>
+BLAZE_HD inline bool arcs_cross(const Vec3<Real>& a, const Vec3<Real>& b, const Vec3<Real>& c, const Vec3<Real>& d) {
+  const Vec3<Real> bxa = cross(b, a), dxc = cross(d, c);
+  const Real cba = dot(c, bxa), dba = dot(d, bxa), adc = dot(a, dxc), bdc = dot(b, dxc);
+  return cba * dba < Real(0) && adc * bdc < Real(0) && cba * bdc > Real(0);
+}
+
 // Which edge pairs are faces of the Minkowski difference A - B? Edge ea of A (normals a, b beside
 // it) and edge eb of B (negated normals c, d beside it) qualify when their Gauss-map arcs cross:
 //   (c.(b x a)) (d.(b x a)) < 0,  (a.(d x c)) (b.(d x c)) < 0,  (c.(b x a)) (b.(d x c)) > 0.
@@ -66,6 +75,11 @@ namespace polyhedron_detail {
 //   for edge ea: s_f = sign(n_B[f].(b x a)) for each face f of B (c.(b x a) = -s_0), turned into
 //     edge sets through the table's edges_left_of / edges_right_of.
 // Then the candidates of ea are one AND-OR expression, visited in increasing eb as before.
+// Measured on the H200 (1e6 bodies): dodecahedra (30 x 30 edge pairs) 12.2 ms per step for the
+// contacts instead of 17.8 (packed); cubes and octahedra (12 x 12) were slower with the sets (the
+// 512 B of sets per thread), so pairs of at most kDirectEdgePairs test the arcs one by one (the
+// same decisions; arcs_cross).
+inline constexpr int kDirectEdgePairs = 300;
 struct ArcSets {
   std::uint64_t pos[kMaxFaces], neg[kMaxFaces];  // over B's edges, per face of A
 };
@@ -227,34 +241,48 @@ struct PolyhedronShape {
     Real edge_best = -reach;
     int edge_a = -1, edge_b = -1;
     Vec3<Real> edge_axis{0, 0, 0};
-    ArcSets sets;
-    for (int g = 0; g < A.face_count; ++g) sets.pos[g] = sets.neg[g] = 0;
-    for (int eb = 0; eb < B.edge_count; ++eb) {
-      const Vec3<Real> dxc = cross(nb[B.edge_face[eb][1]], nb[B.edge_face[eb][0]]);
-      const std::uint64_t bit = std::uint64_t(1) << eb;
-      for (int g = 0; g < A.face_count; ++g) {
-        const Real s = dot(A.normal[g], dxc);
-        if (s > Real(0)) sets.pos[g] |= bit;
-        if (s < Real(0)) sets.neg[g] |= bit;
+    // The separation along the axis of edges ea, eb (if they are not parallel); false: separated.
+    const auto edge_axis_test = [&](int ea, int eb, const Vec3<Real>& a0, const Vec3<Real>& da) {
+      const Vec3<Real> b0 = vb[B.edge_vertex[eb][0]];
+      const Vec3<Real> db = vb[B.edge_vertex[eb][1]] - b0;
+      Vec3<Real> n = cross(da, db);
+      const Real len2 = norm2(n);
+      if (!(len2 > Real(1e-12) * norm2(da) * norm2(db))) return true;  // parallel edges: a face axis covers them
+      n *= Real(1) / sqrt_r(len2);
+      if (dot(n, a0) < Real(0)) n = -n;
+      const Real s = dot(n, b0 - a0);
+      if (s > Real(0)) return false;
+      if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
+      return true;
+    };
+    if (A.edge_count * B.edge_count <= kDirectEdgePairs) {
+      for (int ea = 0; ea < A.edge_count; ++ea) {
+        const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
+        const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;
+        const Vec3<Real> na1 = A.normal[A.edge_face[ea][0]], na2 = A.normal[A.edge_face[ea][1]];
+        for (int eb = 0; eb < B.edge_count; ++eb)
+          if (arcs_cross(na1, na2, -nb[B.edge_face[eb][0]], -nb[B.edge_face[eb][1]]) && !edge_axis_test(ea, eb, a0, da))
+            return ContactGeometry<Real>::none();
       }
-    }
-    for (int ea = 0; ea < A.edge_count; ++ea) {
-      const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
-      const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;
-      const int fa0 = A.edge_face[ea][0], fa1 = A.edge_face[ea][1];
-      for (std::uint64_t todo = crossing_edges(B, nb, cross(A.normal[fa1], A.normal[fa0]), sets, fa0, fa1); todo != 0;
-           todo &= todo - 1) {
-        const int eb = lowest_bit(todo);
-        const Vec3<Real> b0 = vb[B.edge_vertex[eb][0]];
-        const Vec3<Real> db = vb[B.edge_vertex[eb][1]] - b0;
-        Vec3<Real> n = cross(da, db);
-        const Real len2 = norm2(n);
-        if (!(len2 > Real(1e-12) * norm2(da) * norm2(db))) continue;  // parallel edges: a face axis covers them
-        n *= Real(1) / sqrt_r(len2);
-        if (dot(n, a0) < Real(0)) n = -n;
-        const Real s = dot(n, b0 - a0);
-        if (s > Real(0)) return ContactGeometry<Real>::none();
-        if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
+    } else {
+      ArcSets sets;
+      for (int g = 0; g < A.face_count; ++g) sets.pos[g] = sets.neg[g] = 0;
+      for (int eb = 0; eb < B.edge_count; ++eb) {
+        const Vec3<Real> dxc = cross(nb[B.edge_face[eb][1]], nb[B.edge_face[eb][0]]);
+        const std::uint64_t bit = std::uint64_t(1) << eb;
+        for (int g = 0; g < A.face_count; ++g) {
+          const Real s = dot(A.normal[g], dxc);
+          if (s > Real(0)) sets.pos[g] |= bit;
+          if (s < Real(0)) sets.neg[g] |= bit;
+        }
+      }
+      for (int ea = 0; ea < A.edge_count; ++ea) {
+        const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
+        const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;
+        const int fa0 = A.edge_face[ea][0], fa1 = A.edge_face[ea][1];
+        for (std::uint64_t todo = crossing_edges(B, nb, cross(A.normal[fa1], A.normal[fa0]), sets, fa0, fa1); todo != 0;
+             todo &= todo - 1)
+          if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return ContactGeometry<Real>::none();
       }
     }
     if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;

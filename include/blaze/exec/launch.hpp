@@ -16,9 +16,12 @@ void for_each(Host, Index n, const F& f) {
 
 #if BLAZE_DEVICE_CODE
 constexpr int kBlockSize = 256;
+#ifndef BLAZE_MIN_BLOCKS  // blocks per SM the compiler must fit (caps registers); 1: no cap
+#define BLAZE_MIN_BLOCKS 1
+#endif
 
 template <class F>
-__global__ void for_each_kernel(Index n, F f) {
+__global__ void __launch_bounds__(kBlockSize, BLAZE_MIN_BLOCKS) for_each_kernel(Index n, F f) {
   const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i < n) f(i);
 }
