@@ -118,8 +118,8 @@ int main(int argc, char** argv) {
     largest(largest_spheres, [](long n) {
       return sphere_case<ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>>("linear", n, 10, 20);
     });
-    rows.push_back(polyhedron_case("cube", PolyScene::packed, 34000000L, 10, 20));
-    largest(largest_cubes, [](long n) { return polyhedron_case("cube", PolyScene::packed, n, 10, 20); });
+    rows.push_back(polyhedron_case("cube", PolyScene::packed, 34000000L, 5, 10));
+    largest(largest_cubes, [](long n) { return polyhedron_case("cube", PolyScene::packed, n, 5, 10); });
     print_rows(rows, first);
   }
   if (wanted("mill")) {
