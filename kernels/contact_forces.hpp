@@ -8,6 +8,7 @@
 // with Features::monitor it keeps its deepest overlap / radius (reset by the host).
 #pragma once
 #include "blaze/contact/kinematics.hpp"
+#include "blaze/exec/launch.hpp"
 #include "blaze/laws/contact_law.hpp"
 #include "blaze/sim/features.hpp"
 #include "kernels/broad_phase_kernels.hpp"
@@ -23,6 +24,7 @@ struct ContactStats {
 template <class Shape, class Law, class Kinematics, class Features>
 struct ContactForces {
   using Real = typename Law::real_type;
+  static constexpr int kMinBlocks = min_blocks_v<Shape>;  // launch.hpp
   Shape shape;
   ParticleView<Real> p;
   NeighbourView list;

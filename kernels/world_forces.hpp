@@ -2,6 +2,7 @@
 // torque. Walls are immovable here (infinite mass, zero velocity): m_eff = m_i.
 #pragma once
 #include "blaze/contact/kinematics.hpp"
+#include "blaze/exec/launch.hpp"
 #include "blaze/laws/contact_law.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/world/world.hpp"
@@ -12,6 +13,7 @@ namespace blaze {
 template <class Shape, class Law, class Kinematics, class Features>
 struct WorldForces {
   using Real = typename Law::real_type;
+  static constexpr int kMinBlocks = min_blocks_v<Shape>;  // launch.hpp
   Shape shape;
   ParticleView<Real> p;
   WorldView<Real> world;

@@ -119,6 +119,7 @@ BLAZE_HD inline Vec3<Real> segment_midpoint(const Vec3<Real>& p0, const Vec3<Rea
 template <class Real, class NormalChoice = SeparatingAxisNormal>
 struct PolyhedronShape {
   static constexpr const char* name = "polyhedron";
+  static constexpr int kMinBlocks = 4;  // contact kernels: at most 64 registers (launch.hpp)
   // The shape table travels by value in every kernel's arguments (CUDA's constant bank). A copy
   // in device memory can be named instead, to measure the two placements (bench/).
   PolyhedronTable<Real> table;

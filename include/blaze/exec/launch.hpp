@@ -7,6 +7,23 @@
 
 namespace blaze {
 
+// Blocks of 256 threads per SM that a functor's kernel must fit (its kMinBlocks, else 1): 4 caps
+// the registers at 65536 / (256 x 4) = 64 per thread. The polyhedron contact kernels ask for 4:
+// uncapped they took 128 registers and ran at 25% occupancy; on the H200 at 1e6 bodies the cap
+// took packed cubes from 2.3e7 to 3.8e7 particle-steps/s, packed dodecahedra 6.0e7 -> 8.1e7,
+// falling cubes 2.5e8 -> 4.5e8. The sphere kernels do not: with the cap the frictionless,
+// non-rotating bed at 1e7 lost 12% (6.99e9 -> 6.18e9).
+template <class F, class = void>
+struct MinBlocks {
+  static constexpr int value = 1;
+};
+template <class F>
+struct MinBlocks<F, std::void_t<decltype(F::kMinBlocks)>> {
+  static constexpr int value = F::kMinBlocks;
+};
+template <class F>
+inline constexpr int min_blocks_v = MinBlocks<F>::value;
+
 template <class F>
 void for_each(Host, Index n, const F& f) {
   static_assert(std::is_trivially_copyable_v<F>, "kernel functors are passed by value to the GPU");
@@ -16,17 +33,8 @@ void for_each(Host, Index n, const F& f) {
 
 #if BLAZE_DEVICE_CODE
 constexpr int kBlockSize = 256;
-// Blocks of kBlockSize per SM the compiler must fit, which caps registers at 65536 / (256 x 4) =
-// 64 per thread. Measured on the H200 at 1e6 bodies (particle-steps/s, no cap -> cap 4): packed
-// cubes 2.3e7 -> 3.8e7, packed dodecahedra 6.0e7 -> 8.1e7, falling cubes 2.5e8 -> 4.5e8; spheres
-// unchanged (3.1e9). Without the cap the polyhedron contact kernel took 128 registers and ran at
-// 25% occupancy. Override with -DBLAZE_MIN_BLOCKS=n to measure.
-#ifndef BLAZE_MIN_BLOCKS
-#define BLAZE_MIN_BLOCKS 4
-#endif
-
 template <class F>
-__global__ void __launch_bounds__(kBlockSize, BLAZE_MIN_BLOCKS) for_each_kernel(Index n, F f) {
+__global__ void __launch_bounds__(kBlockSize, min_blocks_v<F>) for_each_kernel(Index n, F f) {
   const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i < n) f(i);
 }
