@@ -5,6 +5,8 @@
 #   make bench             particle-steps/s and per-phase times (GPU if present)
 #   make bench-compare     the CPU backend against LIGGGHTS on the same sphere scene, same cores
 #   make table-3.3         the thesis's Table 3.3 (Cundall numbers) with Blaze's rows -> bench/table-3.3.md
+#   make fig-3.24          one of the thesis's performance figures (fig-2.14, fig-3.21 ... fig-3.26)
+#                          with our numbers -> plots/perf/; make perf-figures: all of them
 #   make test SANITIZE=1   the CPU suite built with AddressSanitizer + UndefinedBehaviorSanitizer (in build-sanitize/)
 #   make stress            the stress suite at full size (10^5 particles x 10^5 steps; GPU if present)
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
@@ -166,6 +168,27 @@ bench: deps
 .PHONY: table-3.3
 table-3.3:
 	python3 tools/table_3_3.py bench/results
+
+# ---- the thesis's performance figures (issue 6): plots/perf/fig-X.gp over bench/results -------
+# On a machine with a GPU the data are measured first (blaze_bench: falling, packed and largest
+# polyhedron beds, the world-surface sweep; ~6 min on an H200, writes bench/results/<gpu>-<date>-
+# figures.csv); elsewhere the committed GPU results are plotted. PERF_MEASURE=0 plots only.
+PERF_FIGURES := $(patsubst plots/perf/%.gp,%,$(wildcard plots/perf/fig-*.gp))
+PERF_MEASURE ?= $(if $(and $(HAVE_GPU),$(NVCC)),1,0)
+.PHONY: perf-figures perf-data $(PERF_FIGURES)
+perf-figures: $(PERF_FIGURES)
+$(PERF_FIGURES): perf-data
+	gnuplot plots/perf/$@.gp
+	@echo "wrote plots/perf/$@.png"
+perf-data: deps
+ifeq ($(PERF_MEASURE),1)
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_bench
+	$(BUILD)/cuda/blaze_bench --cases polyhedra,packed,surfaces --tag figures --out bench/results
+	$(BUILD)/cuda/blaze_bench --cases largest --tag largest --out bench/results
+else
+	@echo "perf figures: no GPU here, plotting the committed GPU results in bench/results"
+endif
+	python3 tools/perf_figures.py
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk

@@ -20,6 +20,7 @@
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/sim/run_log.hpp"
+#include "blaze/sim/schedule.hpp"
 #include "blaze/sim/simulation.hpp"
 
 using namespace blaze;
@@ -180,9 +181,7 @@ int run_scene(const Scene& s, const Options& o) {
   // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
   // the GPU can batch them (Simulation::run).
   const auto next_event = [&](std::uint64_t k) {
-    std::uint64_t next = steps;
-    for (std::uint64_t every_k : {csv_every, vtu_every, checkpoint_every})
-      if (every_k) next = std::min(next, (k / every_k + 1) * every_k);
+    const std::uint64_t next = blaze::next_event(k, steps, {csv_every, vtu_every, checkpoint_every});
     // and the progress line now and then: about 1e7 particle-steps apart (~3 s on 2 CPU cores)
     const std::uint64_t chunk = std::clamp<std::uint64_t>(10000000 / std::max<std::uint64_t>(1, sim.size()), 1, 10000);
     return std::min(next, k + chunk);

@@ -23,6 +23,7 @@
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
 #include "blaze/sim/simulation.hpp"
 
@@ -119,7 +120,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
       }
       if (k == k1) break;
       // Up to the next row or frame in one stretch (the GPU batches it: Simulation::run).
-      const std::uint64_t next = std::min({k1, (k / csv_every + 1) * csv_every, (k / vtu_every + 1) * vtu_every});
+      const std::uint64_t next = next_event(k, k1, {csv_every, vtu_every});
       sim.run(next - k);
       particle_steps += static_cast<std::uint64_t>(sim.size()) * (next - k);
       k = next;

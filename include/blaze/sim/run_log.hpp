@@ -70,13 +70,16 @@ class RunLog {
   template <class Sim>
   void sample(Sim& sim, const ParticleState<Real>& st) {
     Energies e;
-    double exchange = 0;  // sum m |g| h
     for (std::size_t k = 0; k < st.size(); ++k) {
       const Energies p = particle_energies(st, k, gravity_);
       e.translational += p.translational, e.rotational += p.rotational, e.potential += p.potential;
-      exchange += static_cast<double>(st.mass[k]) * static_cast<double>(norm(gravity_)) * height_;
     }
-    if (!started_) e0_ = e.total(), scale_ = e.translational + e.rotational + exchange, started_ = true;
+    if (!started_) {  // the scale: initial kinetic energy + sum m |g| h
+      double exchange = 0;
+      for (std::size_t k = 0; k < st.size(); ++k)
+        exchange += static_cast<double>(st.mass[k]) * static_cast<double>(norm(gravity_)) * height_;
+      e0_ = e.total(), scale_ = e.translational + e.rotational + exchange, started_ = true;
+    }
     const double removed_energy = sim.removed_energy();
     const double gain = e.total() + removed_energy - e0_;
     if (scale_ > 0 && gain > gain_limit_ * scale_) {
