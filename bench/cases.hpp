@@ -217,9 +217,7 @@ Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup,
   const ConvexShape convex = load_shape(std::string("data/shapes/") + shape_name + ".shape");
   shape.table.add(convex, kDensity);
   const double k = 1e5, dt = kPi * std::sqrt(0.5 * shape.table.type[0].mass / k) / 25;
-  const Eigen::Quaterniond drawn(convex.axes_in_input);  // the file's orientation
-  auto scene = kind == PolyScene::packed
-                   ? packed_polyhedra(shape.table, 0, static_cast<int>(n), 42, dt, Quat<double>{drawn.w(), drawn.x(), drawn.y(), drawn.z()})
+  auto scene = kind == PolyScene::packed ? packed_polyhedra(shape.table, 0, static_cast<int>(n), 42, dt, drawn_orientation(convex))
                                          : polyhedron_packing(shape.table, 0, static_cast<int>(n), 42, dt);
   if (floor_tiles > 1) tile_floor(scene.world, floor_tiles);
   scene.params.skin = static_cast<float>(g_skin_fraction * shape.table.type[0].bounding_radius);

@@ -433,7 +433,7 @@ BOOST_AUTO_TEST_CASE(first_touch_kind_follows_integral_geometry) {
 
   const long n = tol::contact_kind_first_touch_pairs;
   const double reach = 2 * cube.bounding_radius, spacing = 3 * reach;
-  const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n))));
+  const int side = lattice_side(n);
   std::mt19937_64 rng(27);
   std::uniform_real_distribution<double> uniform(0, 1);
   ParticleState<double> pairs;

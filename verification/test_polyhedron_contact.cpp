@@ -113,6 +113,42 @@ BOOST_AUTO_TEST_CASE(agrees_with_brute_force_separating_axes) {
                                                          << total.worst_angle << " deg");
 }
 
+// The two ways of finding the edge pairs that are faces of the Minkowski difference (arcs tested
+// pair by pair, or from bit sets: polyhedron.hpp) must give the same contact to the last bit: the
+// same axes are tested in the same order. Every shape combination, random pairs near contact.
+BOOST_AUTO_TEST_CASE(edge_pair_enumerations_agree) {
+  std::vector<ConvexShape> shapes;
+  for (const char* f : kShapes) shapes.push_back(load_shape(std::string("data/shapes/") + f + ".shape"));
+  long compared = 0, touching = 0, differ = 0;
+  for (std::size_t ta = 0; ta < shapes.size(); ++ta)
+    for (std::size_t tb = ta; tb < shapes.size(); ++tb) {
+      PolyhedronShape<double> pairwise, bitsets;
+      for (auto* s : {&pairwise, &bitsets}) s->table.add(shapes[ta], 1000), s->table.add(shapes[tb], 1000);
+      pairwise.direct_edge_pairs = 1 << 30;
+      bitsets.direct_edge_pairs = 0;
+      const double d_min = inradius(shapes[ta]) + inradius(shapes[tb]), d_max = shapes[ta].bounding_radius + shapes[tb].bounding_radius;
+      std::mt19937_64 rng(7919 * (ta + 1) + tb);
+      std::uniform_real_distribution<double> u(0, 1);
+      std::normal_distribution<double> g;
+      for (long k = 0; k < tol::edge_pair_enumeration_pairs; ++k) {
+        const Eigen::Quaterniond qa = random_rotation(rng), qb = random_rotation(rng);
+        Eigen::Vector3d dir(g(rng), g(rng), g(rng));
+        const Eigen::Vector3d xb = (d_min + (d_max - d_min) * u(rng)) * dir.normalized();
+        const PolyhedronShape<double>::Body ba{{0, 0, 0}, {qa.w(), qa.x(), qa.y(), qa.z()}, 0, 0};
+        const PolyhedronShape<double>::Body bb{{xb.x(), xb.y(), xb.z()}, {qb.w(), qb.x(), qb.y(), qb.z()}, 1, 1};
+        const auto p = pairwise.collide(ba, bb), b = bitsets.collide(ba, bb);
+        ++compared;
+        touching += p.touching;
+        differ += p.touching != b.touching || p.overlap != b.overlap || p.kind != b.kind || p.normal.x != b.normal.x ||
+                  p.normal.y != b.normal.y || p.normal.z != b.normal.z || p.point.x != b.point.x ||
+                  p.point.y != b.point.y || p.point.z != b.point.z;
+      }
+    }
+  BOOST_TEST_MESSAGE("edge-pair enumerations: " << compared << " pairs, " << touching << " touching, " << differ << " differ");
+  BOOST_TEST(differ == 0);
+  BOOST_TEST(touching > compared / 10);  // the sample reaches contact
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 // Sphere against each shipped polyhedron: a sphere placed outside a face, an edge and a vertex

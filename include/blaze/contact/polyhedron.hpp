@@ -77,9 +77,8 @@ BLAZE_HD inline bool arcs_cross(const Vec3<Real>& a, const Vec3<Real>& b, const 
 // Then the candidates of ea are one AND-OR expression, visited in increasing eb as before.
 // Measured on the H200 (1e6 bodies): dodecahedra (30 x 30 edge pairs) 12.2 ms per step for the
 // contacts instead of 17.8 (packed); cubes and octahedra (12 x 12) were slower with the sets (the
-// 512 B of sets per thread), so pairs of at most kDirectEdgePairs test the arcs one by one (the
-// same decisions; arcs_cross).
-inline constexpr int kDirectEdgePairs = 300;
+// 512 B of sets per thread), so pairs of at most PolyhedronShape::direct_edge_pairs (300) test
+// the arcs one by one (the same decisions; arcs_cross).
 struct ArcSets {
   std::uint64_t pos[kMaxFaces], neg[kMaxFaces];  // over B's edges, per face of A
 };
@@ -124,6 +123,9 @@ struct PolyhedronShape {
   // in device memory can be named instead, to measure the two placements (bench/).
   PolyhedronTable<Real> table;
   const PolyhedronTable<Real>* table_in_memory = nullptr;
+  // Edge pairs A.edges x B.edges up to which the arcs are tested pair by pair; above, by bit sets
+  // (ArcSets). Both give the same contacts (test polyhedron_contact/edge_pair_enumerations_agree).
+  int direct_edge_pairs = 300;
 
   BLAZE_HD const PolyhedronData<Real>& data(int type) const {
     return table_in_memory ? table_in_memory->type[type] : table.type[type];
@@ -256,7 +258,7 @@ struct PolyhedronShape {
       if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
       return true;
     };
-    if (A.edge_count * B.edge_count <= kDirectEdgePairs) {
+    if (A.edge_count * B.edge_count <= direct_edge_pairs) {
       for (int ea = 0; ea < A.edge_count; ++ea) {
         const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
         const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;

@@ -28,6 +28,15 @@ struct PackingOptions {
   bool lid = false;             // a sixth wall on top, as close as the lattice spacing allows
 };
 
+// Sites along each edge of a cube of at least n lattice cells: the integer ceiling of n^(1/3).
+// (std::cbrt is not exact at run time: cbrt(216.0) = 6.0000000000000009, so ceil gave 7 rows.)
+inline int lattice_side(long n) {
+  int side = static_cast<int>(std::llround(std::cbrt(static_cast<double>(n))));
+  while (static_cast<long>(side) * side * side < n) ++side;
+  while (side > 1 && static_cast<long>(side - 1) * (side - 1) * (side - 1) >= n) --side;
+  return side;
+}
+
 // Loose bed (defaults): a cubic lattice with gaps that collapses under gravity and collisions.
 // Dense bed (fcc, pitch < 2, lid): 12 neighbours each, all compressed against their neighbours and
 // the six walls, so the bed stays in contact: the benchmark state.
@@ -40,7 +49,7 @@ Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, co
   const int per_cell = fcc ? 4 : 1;
   const double offsets[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   const double pitch = o.pitch_in_radii * radius, cell = fcc ? pitch * std::sqrt(2.0) : pitch;
-  const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n) / per_cell)));
+  const int side = lattice_side((n + per_cell - 1) / per_cell);
   // Walls sit half a pitch beyond the outermost sites (fcc: the outer half-cell is partly empty).
   const double wall_gap = 0.5 * pitch;
   const double extent = (side - 1 + (fcc ? 0.5 : 0.0)) * cell;

@@ -35,7 +35,7 @@ Packing<Real> polyhedron_packing(const PolyhedronTable<Real>& table, int type, i
   std::uniform_real_distribution<double> u(0, 1);
   ParticleState<Real> poly;
   poly.reserve(p.particles.size());
-  const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n))));  // cubic lattice sites (gravity_packing)
+  const int side = lattice_side(n);  // the cubic lattice's sites per row (gravity_packing)
   const double r = std::sqrt(0.5);
   const Quat<double> quarter_turn{r, r, 0, 0};  // 90 degrees about x
   for (std::size_t i = 0; i < p.particles.size(); ++i) {
@@ -55,8 +55,14 @@ Packing<Real> polyhedron_packing(const PolyhedronTable<Real>& table, int type, i
   return p;
 }
 
-// base: the orientation that shows the shape as its file drew it (ConvexShape::axes_in_input;
-// the table holds it in its principal frame, whose axes are arbitrary for isotropic shapes).
+// The orientation that shows a shape as its file drew it: the table holds it in its principal
+// frame (ConvexShape::axes_in_input), whose axes are arbitrary for isotropic shapes.
+inline Quat<double> drawn_orientation(const ConvexShape& s) {
+  const Eigen::Quaterniond q(s.axes_in_input);
+  return {q.w(), q.x(), q.y(), q.z()};
+}
+
+// base: the orientation of the even sites, usually drawn_orientation(shape).
 template <class Real>
 Packing<Real> packed_polyhedra(const PolyhedronTable<Real>& table, int type, int n, unsigned seed, double dt,
                                const Quat<double>& base, double pitch_ratio = 0.99, double tilt = 0.01) {
