@@ -37,6 +37,12 @@ inline int lattice_side(long n) {
   return side;
 }
 
+// Cell c of a lattice with `side` cells per row: rows along x, then z, then layers up y.
+struct LatticeCell {
+  int ix, iy, iz;
+};
+inline LatticeCell lattice_cell(int c, int side) { return {c % side, c / (side * side), (c / side) % side}; }
+
 // Loose bed (defaults): a cubic lattice with gaps that collapses under gravity and collisions.
 // Dense bed (fcc, pitch < 2, lid): 12 neighbours each, all compressed against their neighbours and
 // the six walls, so the bed stays in contact: the benchmark state.
@@ -58,8 +64,8 @@ Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, co
   p.particles.reserve(static_cast<std::size_t>(n));
   double top = 0;
   for (int k = 0; k < n; ++k) {
-    const int site = k % per_cell, c = k / per_cell;
-    const int ix = c % side, iz = (c / side) % side, iy = c / (side * side);
+    const int site = k % per_cell;
+    const auto [ix, iy, iz] = lattice_cell(k / per_cell, side);
     const Vec3<double> x{(ix + offsets[site][0]) * cell - 0.5 * extent, wall_gap + (iy + offsets[site][1]) * cell,
                          (iz + offsets[site][2]) * cell - 0.5 * extent};
     top = std::max(top, x.y);

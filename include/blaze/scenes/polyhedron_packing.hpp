@@ -23,36 +23,34 @@
 
 namespace blaze {
 
-template <class Real>
-Packing<Real> polyhedron_packing(const PolyhedronTable<Real>& table, int type, int n, unsigned seed, double dt,
-                                 const PackingOptions& o = {}, double tilt = -1, bool checkerboard = false,
-                                 const Quat<double>& base = Quat<double>::identity()) {
+// The sphere packing with a body of table type `type` at each site, oriented by orientation(k, rng)
+// (body to world).
+template <class Real, class Orientation>
+Packing<Real> place_polyhedra(const PolyhedronTable<Real>& table, int type, int n, unsigned seed, double dt,
+                              const PackingOptions& o, Orientation&& orientation) {
   PackingOptions spheres = o;
   spheres.radius_spread = 0;
   Packing<Real> p = gravity_packing<Real>(n, table.type[type].bounding_radius, seed, dt, spheres);
   std::mt19937_64 rng(seed + 1);
-  std::normal_distribution<double> g;
-  std::uniform_real_distribution<double> u(0, 1);
   ParticleState<Real> poly;
   poly.reserve(p.particles.size());
-  const int side = lattice_side(n);  // the cubic lattice's sites per row (gravity_packing)
-  const double r = std::sqrt(0.5);
-  const Quat<double> quarter_turn{r, r, 0, 0};  // 90 degrees about x
   for (std::size_t i = 0; i < p.particles.size(); ++i) {
-    Quat<double> q = normalized(Quat<double>{g(rng), g(rng), g(rng), g(rng)});  // uniform on SO(3)
-    if (tilt >= 0) {  // a turn of up to `tilt` about a random axis
-      Vec3<double> axis{g(rng), g(rng), g(rng)};
-      axis *= 1 / norm(axis);
-      const double half = 0.5 * tilt * u(rng);
-      q = Quat<double>{std::cos(half), std::sin(half) * axis.x, std::sin(half) * axis.y, std::sin(half) * axis.z};
-      const int k = static_cast<int>(i);
-      q = checkerboard && (k % side + (k / side) % side + k / (side * side)) % 2 == 1 ? q * quarter_turn * base : q * base;
-    }
+    const Quat<double> q = orientation(static_cast<int>(i), rng);
     add_polyhedron(poly, table, type, p.particles.position[i], Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)},
                    p.particles.material[i], p.particles.velocity[i]);
   }
   p.particles = std::move(poly);
   return p;
+}
+
+template <class Real>
+Packing<Real> polyhedron_packing(const PolyhedronTable<Real>& table, int type, int n, unsigned seed, double dt,
+                                 const PackingOptions& o = {}) {
+  return place_polyhedra(table, type, n, seed, dt, o, [](int, std::mt19937_64& rng) {
+    std::normal_distribution<double> g;
+    const double w = g(rng), x = g(rng), y = g(rng), z = g(rng);  // in this order: the scenes stay as they were
+    return normalized(Quat<double>{w, x, y, z});                   // uniform on SO(3)
+  });
 }
 
 // The orientation that shows a shape as its file drew it: the table holds it in its principal
@@ -78,7 +76,19 @@ Packing<Real> packed_polyhedra(const PolyhedronTable<Real>& table, int type, int
   o.pitch_in_radii = 2 * extent * pitch_ratio / d.bounding_radius;
   o.speed = 0.01;
   o.lid = true;
-  return polyhedron_packing(table, type, n, seed, dt, o, tilt, true, base);
+  const int side = lattice_side(n);
+  const double r = std::sqrt(0.5);
+  const Quat<double> quarter_turn{r, r, 0, 0};  // 90 degrees about x
+  return place_polyhedra(table, type, n, seed, dt, o, [&](int k, std::mt19937_64& rng) {
+    std::normal_distribution<double> g;
+    std::uniform_real_distribution<double> u(0, 1);
+    Vec3<double> axis{g(rng), g(rng), g(rng)};
+    axis *= 1 / norm(axis);
+    const double half = 0.5 * tilt * u(rng);  // a turn of up to `tilt` about a random axis
+    const Quat<double> turn{std::cos(half), std::sin(half) * axis.x, std::sin(half) * axis.y, std::sin(half) * axis.z};
+    const auto [ix, iy, iz] = lattice_cell(k, side);
+    return (ix + iy + iz) % 2 == 1 ? turn * quarter_turn * base : turn * base;
+  });
 }
 
 }  // namespace blaze
