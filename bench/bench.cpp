@@ -40,6 +40,30 @@ void print_rows(const std::vector<Row>& rows, std::size_t first) {
   std::fflush(stdout);
 }
 
+struct Provenance {
+  std::string device, commit, date;
+};
+
+// The whole table, rewritten after every block of cases: a run that fails or is stopped keeps
+// what it measured. Written to FILE.tmp, then renamed.
+void write_csv(const std::string& file, const std::vector<Row>& rows, const Provenance& at) {
+  std::ofstream csv(file + ".tmp");
+  csv << "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,steps_per_s,"
+         "neighbour_builds,neighbour_capacity,neighbours_per_particle,contacts_per_particle,edge_edge_fraction,bytes_per_particle";
+  for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
+  csv << ",scene,world_surfaces,ms_per_rebuild\n";
+  for (const auto& r : rows) {
+    csv << '"' << at.device << "\"," << at.commit << ',' << at.date << ',' << DefaultSpace::name << ',' << g_skin_fraction << ','
+        << r.n << ',' << r.shape << ',' << r.law << ',' << r.precision << ',' << r.steps << ',' << r.rate << ','
+        << r.steps_per_s() << ',' << r.builds << ',' << r.capacity << ',' << r.neighbours << ',' << r.contacts << ','
+        << r.edge_fraction << ',' << r.bytes_per_particle;
+    for (double ms : r.phase_ms) csv << ',' << ms;
+    csv << ',' << r.scene << ',' << r.surfaces << ',' << r.rebuild_ms << '\n';
+  }
+  csv.close();
+  std::filesystem::rename(file + ".tmp", file);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,6 +88,11 @@ int main(int argc, char** argv) {
                                       : std::vector<long>{10000, 100000, 1000000};
   const std::string device = device_name(DefaultSpace{}), commit = git_commit(), date = utc_date();
   std::printf("blaze bench: %s backend on %s, commit %s, %s\n", DefaultSpace::name, device.c_str(), commit.c_str(), date.c_str());
+  std::filesystem::create_directories(out_dir);
+  std::string tag = gpu ? device.substr(0, device.find(" (")) : std::string("cpu");
+  for (char& c : tag) c = c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + skin_tag() + tag_suffix + ".csv";
+  const Provenance at{device, commit, date};
   std::vector<Row> rows;
   for (long n : sizes) {
     if (max_n > 0 && n > max_n) break;
@@ -103,6 +132,7 @@ int main(int argc, char** argv) {
                   rows.back().rate / rows[rows.size() - 2].rate);
     }
     print_rows(rows, first);
+    write_csv(file, rows, at);
   }
   if (wanted("largest")) {  // few steps: a step of 5e8 spheres takes about 0.1 s
     const std::size_t first = rows.size();
@@ -121,33 +151,19 @@ int main(int argc, char** argv) {
     rows.push_back(polyhedron_case("cube", PolyScene::packed, 34000000L, 5, 10));
     largest(largest_cubes, [](long n) { return polyhedron_case("cube", PolyScene::packed, n, 5, 10); });
     print_rows(rows, first);
+    write_csv(file, rows, at);
   }
   if (wanted("mill")) {
     rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000));
     print_rows(rows, rows.size() - 1);
   }
-  std::filesystem::create_directories(out_dir);
-  std::string tag = gpu ? device.substr(0, device.find(" (")) : std::string("cpu");
-  for (char& c : tag) c = c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + skin_tag() + tag_suffix + ".csv";
-  std::ofstream csv(file);
-  csv << "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,steps_per_s,"
-         "neighbour_builds,neighbour_capacity,neighbours_per_particle,contacts_per_particle,edge_edge_fraction,bytes_per_particle";
-  for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
-  csv << ",scene,world_surfaces,ms_per_rebuild\n";
+  write_csv(file, rows, at);
   std::printf("\n%-9s %-12s %-6s %-6s %11s", "N", "shape", "law", "prec", "p-steps/s");
   for (const char* ph : kPhases) std::printf(" %10.10s", ph);
   std::printf(" %10s   (ms/step, phases timed by events; broad phase per rebuild)\n", "rebuild");
   for (const auto& r : rows) {
-    csv << '"' << device << "\"," << commit << ',' << date << ',' << DefaultSpace::name << ',' << g_skin_fraction << ',' << r.n << ',' << r.shape << ',' << r.law
-        << ',' << r.precision << ',' << r.steps << ',' << r.rate << ',' << r.steps_per_s() << ',' << r.builds << ',' << r.capacity << ','
-        << r.neighbours << ',' << r.contacts << ',' << r.edge_fraction << ',' << r.bytes_per_particle;
     std::printf("%-9ld %-12s %-6s %-6s %11.3e", r.n, r.shape.c_str(), r.law.c_str(), r.precision.c_str(), r.rate);
-    for (double ms : r.phase_ms) {
-      csv << ',' << ms;
-      std::printf(" %10.4f", ms);
-    }
-    csv << ',' << r.scene << ',' << r.surfaces << ',' << r.rebuild_ms << '\n';
+    for (double ms : r.phase_ms) std::printf(" %10.4f", ms);
     std::printf(" %10.4f %s/%d\n", r.rebuild_ms, r.scene.c_str(), r.surfaces);
   }
   std::printf("wrote %s\n", file.c_str());
