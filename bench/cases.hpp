@@ -4,8 +4,6 @@
 #pragma once
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 #include "blaze/contact/sphere.hpp"
@@ -16,11 +14,10 @@
 #include "blaze/scenes/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 
-
 namespace blaze::bench {
 
 constexpr double kPi = 3.14159265358979323846, kRadius = 1e-3, kDensity = 2500, kStiffness = 1e4;
-const char* kPhases[] = {"rebuild-check", "hash", "sort", "reorder", "neighbours", "contacts", "walls", "integrate"};
+inline const char* kPhases[] = {"rebuild-check", "hash", "sort", "reorder", "neighbours", "contacts", "walls", "integrate"};
 
 struct Row {
   std::string shape, law, precision;
@@ -40,26 +37,26 @@ struct Row {
 template <class Law>
 Law make_law();
 template <>
-ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction> make_law() {
+inline ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction> make_law() {
   return {LinearSpringDashpot<float>::from_restitution(kStiffness, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
 }
 template <>
-ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction> make_law() {
+inline ContactLaw<double, LinearSpringDashpot, HistoryFreeFriction> make_law() {
   return {LinearSpringDashpot<double>::from_restitution(kStiffness, 0.5), HistoryFreeFriction<double>::make(0.4, 0.05)};
 }
 template <>
-ContactLaw<float, LinearSpringDashpot, NoFriction> make_law() {
+inline ContactLaw<float, LinearSpringDashpot, NoFriction> make_law() {
   return {LinearSpringDashpot<float>::from_restitution(kStiffness, 0.5), {}};
 }
 template <>
-ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
+inline ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
   // K_n such that a contact at 1 m/s lasts as long as the linear one (t_c = 2.94 delta_max / v).
   return {Hertz<float>::from_stiffness(2.3e6, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
 }
 
-double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
+inline double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
 
-std::string skin_tag() {
+inline std::string skin_tag() {
   if (g_skin_fraction == 0.2) return "";
   char buf[32];
   std::snprintf(buf, sizeof buf, "-skin%g", g_skin_fraction);
@@ -82,10 +79,7 @@ Row measure(Sim& sim, const char* shape, const char* law_name, const char* preci
           static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
           static_cast<double>(sim.memory_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
           sim.neighbour_capacity(), 0, 0, 0, {}, surfaces, 0};
-  const auto nl = sim.neighbour_lists();
-  long listed = 0;
-  for (Index c : nl.count) listed += c;
-  row.neighbours = static_cast<double>(listed) / static_cast<double>(sim.size());
+  row.neighbours = sim.mean_neighbours();
   sim.timer().enabled = true;
   sim.timer().reset();
   const long phase_steps = std::max(10L, steps / 4);
@@ -153,7 +147,7 @@ Row skip_case(const char* label, long n, long warmup, long steps) {
 // 0.825, mu = 0.15 (its calibrated combination 3), dt = 4.14e-5 s (its eq. 4.4 limit); k = 2e6 N/m
 // puts dt at 0.06 of the critical step. The drum does not rotate yet (mills come later): the
 // balls drop from a lattice, settle over the warm-up, then the bed is timed.
-Row mill_case(long warmup, long steps) {
+inline Row mill_case(long warmup, long steps) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   using V = Vec3<double>;
   const double r = 0.025, rho = 7800, drum_r = 0.45, length = 0.15, dt = 4.14e-5;
@@ -210,7 +204,7 @@ enum class PolyScene { free_fall, packed };
 // benchmark); packed: packed_polyhedra, every body pressed on its six axial neighbours.
 // table_in_memory: read the shape table from device memory instead of the kernel arguments.
 // floor_tiles > 1: the floor as floor_tiles^2 polygons (world-surface scaling).
-Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, bool table_in_memory = false,
+inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, bool table_in_memory = false,
                     int floor_tiles = 1) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   PolyhedronShape<float> shape;

@@ -84,8 +84,9 @@ Packing<Real> packed_polyhedra(const PolyhedronTable<Real>& table, int type, int
     std::uniform_real_distribution<double> u(0, 1);
     Vec3<double> axis{g(rng), g(rng), g(rng)};
     axis *= 1 / norm(axis);
-    const double half = 0.5 * tilt * u(rng);  // a turn of up to `tilt` about a random axis
-    const Quat<double> turn{std::cos(half), std::sin(half) * axis.x, std::sin(half) * axis.y, std::sin(half) * axis.z};
+    const double half_angle = 0.5 * tilt * u(rng);  // a turn of up to `tilt` about a random axis
+    const double s = std::sin(half_angle);
+    const Quat<double> turn{std::cos(half_angle), s * axis.x, s * axis.y, s * axis.z};
     const auto [ix, iy, iz] = lattice_cell(k, side);
     return (ix + iy + iz) % 2 == 1 ? turn * quarter_turn * base : turn * base;
   });

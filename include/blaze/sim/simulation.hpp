@@ -200,6 +200,15 @@ class Simulation {
     copy_n(nl.index, h.index.size(), h.index.data(), Space{}, Host{});
     return h;
   }
+  // Mean neighbour-list length (benchmarks; reads only the counts).
+  double mean_neighbours() {
+    const NeighbourView nl = broad_.neighbours();
+    std::vector<Index> count(store_.size());
+    copy_n(nl.count, count.size(), count.data(), Space{}, Host{});
+    double total = 0;
+    for (Index c : count) total += c;
+    return count.empty() ? 0 : total / static_cast<double>(count.size());
+  }
   // Particle arrays plus broad phase (not counting the sorter's scratch), bytes.
   std::size_t memory_bytes() const { return store_.bytes() + broad_.bytes(); }
 
