@@ -56,48 +56,49 @@ struct ThesisNormal {
 
 namespace polyhedron_detail {
 
-// Do the Gauss-map arcs (a, b) and (c, d) cross? (a, b: normals beside an edge of A; c, d: the
-// negated normals beside an edge of B.) Then the edge pair is a face of the Minkowski difference.
-template <class Real>
-BLAZE_HD inline bool arcs_cross(const Vec3<Real>& a, const Vec3<Real>& b, const Vec3<Real>& c, const Vec3<Real>& d) {
-  const Vec3<Real> bxa = cross(b, a), dxc = cross(d, c);
-  const Real cba = dot(c, bxa), dba = dot(d, bxa), adc = dot(a, dxc), bdc = dot(b, dxc);
-  return cba * dba < Real(0) && adc * bdc < Real(0) && cba * bdc > Real(0);
-}
-
 // Which edge pairs are faces of the Minkowski difference A - B? Edge ea of A (normals a, b beside
 // it) and edge eb of B (negated normals c, d beside it) qualify when their Gauss-map arcs cross:
 //   (c.(b x a)) (d.(b x a)) < 0,  (a.(d x c)) (b.(d x c)) < 0,  (c.(b x a)) (b.(d x c)) > 0.
-// Only signs matter, and each depends on one edge and one face, so they are taken as bit sets
-// over B's edges (issue 6: testing the arcs pair by pair was most of a packed polyhedron step):
-//   for each face g of A: the edges eb with n_A[g].(n_B1 x n_B0) > 0 (pos[g]) or < 0 (neg[g])
-//     (d x c = n_B1 x n_B0, as c = -n_B0, d = -n_B1);
-//   for edge ea: s_f = sign(n_B[f].(b x a)) for each face f of B (c.(b x a) = -s_0), turned into
-//     edge sets through the table's edges_left_of / edges_right_of.
-// Then the candidates of ea are one AND-OR expression, visited in increasing eb as before.
+// Only signs matter, and each depends on one edge and one face. With s_L, s_R = n_B.(b x a) for
+// the faces left and right of eb (c.(b x a) = -s_L) and arc_B = d x c = n_R x n_L (a table
+// constant, PolyhedronData::edge_arc), the test reads
+//   opposite(s_L, s_R) and opposite(a.arc_B, b.arc_B) and opposite(s_L, b.arc_B).
+BLAZE_HD inline bool opposite(bool x_pos, bool x_neg, bool y_pos, bool y_neg) { return (x_pos && y_neg) || (x_neg && y_pos); }
+template <class Real>
+BLAZE_HD inline bool arcs_cross(Real s_left, Real s_right, Real a_arc, Real b_arc) {
+  const Real z(0);
+  return opposite(s_left > z, s_left < z, s_right > z, s_right < z) && opposite(a_arc > z, a_arc < z, b_arc > z, b_arc < z) &&
+         opposite(s_left > z, s_left < z, b_arc > z, b_arc < z);
+}
+
+// The same test for all of B's edges at once, as 64-bit sets (issue 6: testing the arcs pair by
+// pair was most of a packed dodecahedron step):
+//   for each face g of A: the edges eb with n_A[g].arc_B[eb] > 0 (pos[g]) or < 0 (neg[g]);
+//   for edge ea: the signs s_f = n_B[f].(b x a) for each face f of B, turned into edge sets
+//     through the table's edges_left_of / edges_right_of.
+// Then the candidates of ea are one AND-OR expression, visited in increasing eb as the pairwise
+// test visits them, so both give the same contact to the last bit.
 // Measured on the H200 (1e6 bodies): dodecahedra (30 x 30 edge pairs) 12.2 ms per step for the
 // contacts instead of 17.8 (packed); cubes and octahedra (12 x 12) were slower with the sets (the
 // 512 B of sets per thread), so pairs of at most PolyhedronShape::direct_edge_pairs (300) test
-// the arcs one by one (the same decisions; arcs_cross).
+// the arcs one by one.
 struct ArcSets {
   std::uint64_t pos[kMaxFaces], neg[kMaxFaces];  // over B's edges, per face of A
 };
-// B-edge sets for edge ea of A, from the signs s_f (b x a = axis): left_pos = edges whose left
-// face has s > 0, and so on.
+// B-edge sets for edge ea of A (its faces fa0 = a, fa1 = b; axis = b x a, in B's axes).
 template <class Real>
-BLAZE_HD inline std::uint64_t crossing_edges(const PolyhedronData<Real>& B, const Vec3<Real>* nb, const Vec3<Real>& axis,
-                                            const ArcSets& sets, int fa0, int fa1) {
+BLAZE_HD inline std::uint64_t crossing_edges(const PolyhedronData<Real>& B, const Vec3<Real>& axis, const ArcSets& sets,
+                                            int fa0, int fa1) {
   std::uint64_t left_pos = 0, left_neg = 0, right_pos = 0, right_neg = 0;
   for (int f = 0; f < B.face_count; ++f) {
-    const Real s = dot(nb[f], axis);
+    const Real s = dot(B.normal[f], axis);
     if (s > Real(0)) left_pos |= B.edges_left_of[f], right_pos |= B.edges_right_of[f];
     if (s < Real(0)) left_neg |= B.edges_left_of[f], right_neg |= B.edges_right_of[f];
   }
   const std::uint64_t opposite_b = (left_pos & right_neg) | (left_neg & right_pos);
   const std::uint64_t opposite_a = (sets.pos[fa0] & sets.neg[fa1]) | (sets.neg[fa0] & sets.pos[fa1]);
-  // c.(b x a) = -s_left and b.(d x c) have the same sign: s_left > 0 with neg[fa1], or < 0 with pos[fa1].
-  const std::uint64_t same_sign = (left_pos & sets.neg[fa1]) | (left_neg & sets.pos[fa1]);
-  return opposite_b & opposite_a & same_sign;
+  const std::uint64_t left_against_b = (left_pos & sets.neg[fa1]) | (left_neg & sets.pos[fa1]);
+  return opposite_b & opposite_a & left_against_b;
 }
 
 // Midpoint of the closest points of segments p0 + s u and q0 + t w, s, t in [0, 1].
@@ -118,7 +119,13 @@ BLAZE_HD inline Vec3<Real> segment_midpoint(const Vec3<Real>& p0, const Vec3<Rea
 template <class Real, class NormalChoice = SeparatingAxisNormal>
 struct PolyhedronShape {
   static constexpr const char* name = "polyhedron";
-  static constexpr int kMinBlocks = 4;  // contact kernels: at most 64 registers (launch.hpp)
+  // Contact kernels: at least this many blocks of 256 per SM (launch.hpp): 4 caps them at 64
+  // registers. BLAZE_POLYHEDRON_MIN_BLOCKS sets it for lever measurements (bench/results/levers/).
+#ifdef BLAZE_POLYHEDRON_MIN_BLOCKS
+  static constexpr int kMinBlocks = BLAZE_POLYHEDRON_MIN_BLOCKS;
+#else
+  static constexpr int kMinBlocks = 4;
+#endif
   // The shape table travels by value in every kernel's arguments (CUDA's constant bank). A copy
   // in device memory can be named instead, to measure the two placements (bench/).
   PolyhedronTable<Real> table;
@@ -205,6 +212,11 @@ struct PolyhedronShape {
     return {true, ra * n, overlap, a.x + ra * point, r * A.bounding_radius / reach, ContactKind::vertex_face};
   }
 
+  // The test runs in A's centre with B's axes: B's vertices (+ u), normals and edge arcs are read
+  // from the table as stored (uniform reads, one broadcast per warp), and A's features are turned
+  // by r = R_B^T R_A one at a time. Nothing is held per thread: B's vertices and planes held in
+  // per-thread arrays (896 B) lived in local memory and were most of the kernel's DRAM traffic
+  // (issue 6, Nsight Compute: 13-15 GB per launch at 1e6 bodies).
   BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = data(a.type);
@@ -212,31 +224,28 @@ struct PolyhedronShape {
     const Vec3<Real> d = b.x - a.x;
     const Real reach = A.bounding_radius + B.bounding_radius;
     if (!(norm2(d) < reach * reach)) return ContactGeometry<Real>::none();
-    // Work in A's body frame: B's vertices, normals and plane offsets moved there.
-    const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
-    const Mat3<Real> r = ra.transpose_times(Mat3<Real>::rotation(b.q));
-    const Vec3<Real> t = ra.transpose_times(d);
-    Vec3<Real> vb[kMaxVertices], nb[kMaxFaces];
-    Real hb[kMaxFaces];
-    for (int k = 0; k < B.vertex_count; ++k) vb[k] = r * B.vertex[k] + t;
-    for (int f = 0; f < B.face_count; ++f) {
-      nb[f] = r * B.normal[f];
-      hb[f] = B.offset[f] + dot(nb[f], t);
-    }
-    // Face axes of A, then of B.
+    const Mat3<Real> rb = Mat3<Real>::rotation(b.q);
+    const Mat3<Real> r = rb.transpose_times(Mat3<Real>::rotation(a.q));  // A's body frame -> B's axes
+    const Vec3<Real> u = rb.transpose_times(d);                          // B's centre
+    const auto vertex_b = [&](int k) { return B.vertex[k] + u; };
+    const auto offset_b = [&](int f) { return B.offset[f] + dot(B.normal[f], u); };
+    // Face axes of A: min over B's vertices of (r n).(v + u) - h; then of B: min over A's
+    // vertices of n.(r v) - h_B = (r^T n).v - h_B.
     Real best = -reach;
     int kind = -1, index = -1;  // kind 0: face of A, 1: face of B, 2: edge pair
     for (int f = 0; f < A.face_count; ++f) {
-      Real s = dot(A.normal[f], vb[0]);
-      for (int k = 1; k < B.vertex_count; ++k) s = min_r(s, dot(A.normal[f], vb[k]));
-      s -= A.offset[f];
+      const Vec3<Real> m = r * A.normal[f];
+      Real s = dot(m, B.vertex[0]);
+      for (int k = 1; k < B.vertex_count; ++k) s = min_r(s, dot(m, B.vertex[k]));
+      s += dot(m, u) - A.offset[f];
       if (s > Real(0)) return ContactGeometry<Real>::none();
       if (s > best) best = s, kind = 0, index = f;
     }
     for (int f = 0; f < B.face_count; ++f) {
-      Real s = dot(nb[f], A.vertex[0]);
-      for (int k = 1; k < A.vertex_count; ++k) s = min_r(s, dot(nb[f], A.vertex[k]));
-      s -= hb[f];
+      const Vec3<Real> m = r.transpose_times(B.normal[f]);
+      Real s = dot(m, A.vertex[0]);
+      for (int k = 1; k < A.vertex_count; ++k) s = min_r(s, dot(m, A.vertex[k]));
+      s -= offset_b(f);
       if (s > Real(0)) return ContactGeometry<Real>::none();
       if (s > best) best = s, kind = 1, index = f;
     }
@@ -246,8 +255,8 @@ struct PolyhedronShape {
     Vec3<Real> edge_axis{0, 0, 0};
     // The separation along the axis of edges ea, eb (if they are not parallel); false: separated.
     const auto edge_axis_test = [&](int ea, int eb, const Vec3<Real>& a0, const Vec3<Real>& da) {
-      const Vec3<Real> b0 = vb[B.edge_vertex[eb][0]];
-      const Vec3<Real> db = vb[B.edge_vertex[eb][1]] - b0;
+      const Vec3<Real> b0 = vertex_b(B.edge_vertex[eb][0]);
+      const Vec3<Real> db = B.vertex[B.edge_vertex[eb][1]] - B.vertex[B.edge_vertex[eb][0]];
       Vec3<Real> n = cross(da, db);
       const Real len2 = norm2(n);
       if (!(len2 > Real(1e-12) * norm2(da) * norm2(db))) return true;  // parallel edges: a face axis covers them
@@ -258,52 +267,63 @@ struct PolyhedronShape {
       if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
       return true;
     };
+    // A's edge ea turned into B's axes: first vertex and direction.
+    const auto edge_of_a = [&](int ea, Vec3<Real>& a0, Vec3<Real>& da) {
+      a0 = r * A.vertex[A.edge_vertex[ea][0]];
+      da = r * (A.vertex[A.edge_vertex[ea][1]] - A.vertex[A.edge_vertex[ea][0]]);
+    };
     if (A.edge_count * B.edge_count <= direct_edge_pairs) {
       for (int ea = 0; ea < A.edge_count; ++ea) {
-        const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
-        const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;
-        const Vec3<Real> na1 = A.normal[A.edge_face[ea][0]], na2 = A.normal[A.edge_face[ea][1]];
+        Vec3<Real> a0, da;
+        edge_of_a(ea, a0, da);
+        const Vec3<Real> na = r * A.normal[A.edge_face[ea][0]], nb = r * A.normal[A.edge_face[ea][1]];
+        const Vec3<Real> axis = cross(nb, na);
         for (int eb = 0; eb < B.edge_count; ++eb)
-          if (arcs_cross(na1, na2, -nb[B.edge_face[eb][0]], -nb[B.edge_face[eb][1]]) && !edge_axis_test(ea, eb, a0, da))
+          if (arcs_cross(dot(B.normal[B.edge_face[eb][0]], axis), dot(B.normal[B.edge_face[eb][1]], axis),
+                         dot(na, B.edge_arc[eb]), dot(nb, B.edge_arc[eb])) &&
+              !edge_axis_test(ea, eb, a0, da))
             return ContactGeometry<Real>::none();
       }
     } else {
       ArcSets sets;
-      for (int g = 0; g < A.face_count; ++g) sets.pos[g] = sets.neg[g] = 0;
-      for (int eb = 0; eb < B.edge_count; ++eb) {
-        const Vec3<Real> dxc = cross(nb[B.edge_face[eb][1]], nb[B.edge_face[eb][0]]);
-        const std::uint64_t bit = std::uint64_t(1) << eb;
-        for (int g = 0; g < A.face_count; ++g) {
-          const Real s = dot(A.normal[g], dxc);
-          if (s > Real(0)) sets.pos[g] |= bit;
-          if (s < Real(0)) sets.neg[g] |= bit;
+      for (int g = 0; g < A.face_count; ++g) {
+        const Vec3<Real> m = r * A.normal[g];
+        std::uint64_t pos = 0, neg = 0;
+        for (int eb = 0; eb < B.edge_count; ++eb) {
+          const Real s = dot(m, B.edge_arc[eb]);
+          if (s > Real(0)) pos |= std::uint64_t(1) << eb;
+          if (s < Real(0)) neg |= std::uint64_t(1) << eb;
         }
+        sets.pos[g] = pos, sets.neg[g] = neg;
       }
       for (int ea = 0; ea < A.edge_count; ++ea) {
-        const Vec3<Real> a0 = A.vertex[A.edge_vertex[ea][0]];
-        const Vec3<Real> da = A.vertex[A.edge_vertex[ea][1]] - a0;
+        Vec3<Real> a0, da;
+        edge_of_a(ea, a0, da);
         const int fa0 = A.edge_face[ea][0], fa1 = A.edge_face[ea][1];
-        for (std::uint64_t todo = crossing_edges(B, nb, cross(A.normal[fa1], A.normal[fa0]), sets, fa0, fa1); todo != 0;
-             todo &= todo - 1)
+        const Vec3<Real> axis = cross(r * A.normal[fa1], r * A.normal[fa0]);
+        for (std::uint64_t todo = crossing_edges(B, axis, sets, fa0, fa1); todo != 0; todo &= todo - 1)
           if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return ContactGeometry<Real>::none();
       }
     }
     if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;
 
+    const auto vertex_a = [&](int k) { return r * A.vertex[k]; };
     Vec3<Real> n{0, 0, 0}, point{0, 0, 0};
     Real overlap = -best;
     ContactKind contact_kind = ContactKind::vertex_face;
     if (kind == 2) {
       n = edge_axis;
       contact_kind = ContactKind::edge_edge;
-      const Vec3<Real> a0 = A.vertex[A.edge_vertex[edge_a][0]], b0 = vb[B.edge_vertex[edge_b][0]];
-      point = segment_midpoint(a0, A.vertex[A.edge_vertex[edge_a][1]] - a0, b0, vb[B.edge_vertex[edge_b][1]] - b0);
+      Vec3<Real> a0, da;
+      edge_of_a(edge_a, a0, da);
+      const Vec3<Real> b0 = vertex_b(B.edge_vertex[edge_b][0]);
+      point = segment_midpoint(a0, da, b0, vertex_b(B.edge_vertex[edge_b][1]) - b0);
     } else if (kind == 0) {
-      n = A.normal[index];
-      point = incident_point(A.normal, A.offset, index, vb, B.vertex_count);
+      n = r * A.normal[index];
+      point = incident_point(n, A.offset[index], vertex_b, B.vertex_count);
     } else {
-      n = -nb[index];
-      point = incident_point(nb, hb, index, A.vertex, A.vertex_count);
+      n = -B.normal[index];
+      point = incident_point(B.normal[index], offset_b(index), vertex_a, A.vertex_count);
     }
     if constexpr (std::is_same_v<NormalChoice, ThesisNormal>) {
       // Type 1: contained vertices of either body; the deepest one's nearest face gives the normal.
@@ -314,20 +334,20 @@ struct PolyhedronShape {
       for (int side = 0; side < 2; ++side) {
         const int count = side == 0 ? B.vertex_count : A.vertex_count;
         for (int k = 0; k < count; ++k) {
-          const Vec3<Real> v = side == 0 ? vb[k] : A.vertex[k];
+          const Vec3<Real> v = side == 0 ? vertex_b(k) : vertex_a(k);
           Real nearest = reach;
           int face = -1;
           bool in = true;
           const int faces = side == 0 ? A.face_count : B.face_count;
           for (int g = 0; g < faces && in; ++g) {
-            const Real pen = side == 0 ? A.offset[g] - dot(A.normal[g], v) : hb[g] - dot(nb[g], v);
+            const Real pen = side == 0 ? A.offset[g] - dot(r * A.normal[g], v) : offset_b(g) - dot(B.normal[g], v);
             in = pen >= -tol;
             if (pen < nearest) nearest = pen, face = g;
           }
           if (!in) continue;
           sum += v;
           ++inside;
-          if (nearest > deepest) deepest = nearest, thesis_normal = side == 0 ? A.normal[face] : -nb[face];
+          if (nearest > deepest) deepest = nearest, thesis_normal = side == 0 ? r * A.normal[face] : -B.normal[face];
         }
       }
       if (inside > 0) {
@@ -336,13 +356,13 @@ struct PolyhedronShape {
         point = sum * (Real(1) / static_cast<Real>(inside));
         contact_kind = ContactKind::vertex_face;
       } else {
-        n = point + (t - point);  // (PC - x_A) + (x_B - PC), x_A = 0 in A's frame
+        n = point + (u - point);  // (PC - x_A) + (x_B - PC), x_A = 0 here
         n *= Real(1) / norm(n);
         contact_kind = ContactKind::edge_edge;
       }
     }
     const Real r_eff = A.bounding_radius * B.bounding_radius / reach;
-    return {true, ra * n, overlap, a.x + ra * point, r_eff, contact_kind};
+    return {true, rb * n, overlap, a.x + rb * point, r_eff, contact_kind};
   }
 
   BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const PlanarPolygon<Real>& w) const {
@@ -429,22 +449,23 @@ struct PolyhedronShape {
     return true;
   }
 
-  // Contact point for a face axis of the reference body (planes `normal`/`offset`, face `f`): the
-  // incident body's vertices that penetrate the face plane to within 1% of the deepest,
-  // weighted by how far they reach into that band. The overlap is the deepest vertex's
+  // Contact point for a face axis of the reference body (the face's plane: normal.x = offset): the
+  // incident body's vertices v(k), in the same frame, that penetrate the face plane to within 1%
+  // of the deepest, weighted by how far they reach into that band. The overlap is the deepest vertex's
   // penetration, so that vertex is the lever arm that keeps the contact force conservative; the
   // band only spreads the arm over (nearly) flat contacts, which it centres, and its weights
   // vary continuously as vertices enter it.
-  BLAZE_HD static Vec3<Real> incident_point(const Vec3<Real>* normal, const Real* offset, int f, const Vec3<Real>* v,
-                                            int count) {
-    Real deepest = offset[f] - dot(normal[f], v[0]);
-    for (int k = 1; k < count; ++k) deepest = max_r(deepest, offset[f] - dot(normal[f], v[k]));
-    const Real floor = deepest - (Real(0.01) * abs_r(deepest) + Real(1e-12) * abs_r(offset[f]));
+  template <class Vertex>
+  BLAZE_HD static Vec3<Real> incident_point(const Vec3<Real>& normal, Real offset, const Vertex& v, int count) {
+    Real deepest = offset - dot(normal, v(0));
+    for (int k = 1; k < count; ++k) deepest = max_r(deepest, offset - dot(normal, v(k)));
+    const Real floor = deepest - (Real(0.01) * abs_r(deepest) + Real(1e-12) * abs_r(offset));
     Vec3<Real> sum{0, 0, 0};
     Real weight = 0;
     for (int k = 0; k < count; ++k) {
-      const Real w = offset[f] - dot(normal[f], v[k]) - floor;
-      if (w > Real(0)) sum += v[k] * w, weight += w;
+      const Vec3<Real> vk = v(k);
+      const Real w = offset - dot(normal, vk) - floor;
+      if (w > Real(0)) sum += vk * w, weight += w;
     }
     return sum * (Real(1) / weight);
   }

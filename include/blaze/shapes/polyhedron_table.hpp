@@ -21,6 +21,9 @@ struct PolyhedronData {
   // Bit e set: edge e has face f as its edge_face[e][0] (edges_left_of) / [1] (edges_right_of).
   // A convex polyhedron within the caps has E = V + F - 2 <= 62 edges, so 64 bits hold them.
   std::uint64_t edges_left_of[kMaxFaces], edges_right_of[kMaxFaces];
+  // normal[right] x normal[left] of each edge: the edge's Gauss-map arc, which the separating-axis
+  // test's edge-pair selection tests against (polyhedron.hpp, arcs_cross).
+  Vec3<Real> edge_arc[kMaxEdges];
   int vertex_count, face_count, edge_count;  // all 0: a sphere of radius bounding_radius
   Real bounding_radius;    // m (bound_R)
   Real volume;             // m^3
@@ -48,6 +51,7 @@ struct PolyhedronData {
       d.edge_face[e][1] = static_cast<std::uint8_t>(s.edges[e].right);
       d.edges_left_of[s.edges[e].left] |= std::uint64_t(1) << e;
       d.edges_right_of[s.edges[e].right] |= std::uint64_t(1) << e;
+      d.edge_arc[e] = cross(d.normal[s.edges[e].right], d.normal[s.edges[e].left]);
     }
     d.bounding_radius = static_cast<Real>(s.bounding_radius);
     d.volume = static_cast<Real>(s.volume);
