@@ -117,16 +117,13 @@ int main(int argc, char** argv) {
     if (wanted("polyhedra") && n <= (gpu ? 10000000L : 100000L))
       for (const char* poly : {"cube", "octahedron", "dodecahedron"})
         rows.push_back(polyhedron_case(poly, PolyScene::free_fall, n, poly_steps, poly_steps));
-    if (wanted("polyhedra") && n == (gpu ? 1000000L : 10000L))  // shape table: kernel arguments vs device memory
-      for (const char* poly : {"cube", "dodecahedron"})
-        rows.push_back(polyhedron_case(poly, PolyScene::free_fall, n, poly_steps, poly_steps, true));
     // Packed lattice beds relax by rotation after ~150 steps (packed_polyhedra): 20 warm-up steps,
     // 60 timed, 15 fenced, all while every body still presses on its neighbours.
     if (wanted("packed") && n <= (gpu ? 10000000L : 100000L))
       for (const char* poly : {"cube", "dodecahedron"}) rows.push_back(polyhedron_case(poly, PolyScene::packed, n, 20, 60));
     if (wanted("surfaces") && n == (gpu ? 1000000L : 10000L))  // world contact against the number of surfaces
       for (const char* poly : {"cube", "dodecahedron"})
-        for (int tiles : {2, 4, 8, 16}) rows.push_back(polyhedron_case(poly, PolyScene::packed, n, 20, 60, false, tiles));
+        for (int tiles : {2, 4, 8, 16}) rows.push_back(polyhedron_case(poly, PolyScene::packed, n, 20, 60, tiles));
     if (wanted("skip") && n == (gpu ? 10000000L : 100000L)) {  // what a scene does not need costs nothing
       rows.push_back(skip_case<LinF, FullFeatures>("sphere-full", n, warmup, steps));
       rows.push_back(skip_case<LeanF, TranslationOnly>("sphere-lean", n, warmup, steps));

@@ -205,10 +205,8 @@ enum class PolyScene { free_fall, packed };
 // Polyhedra of one shape (about 1 cm), linear law (k = 1e5 N/m, e = 0.5), float, dt = t_c/25.
 // free_fall: random orientations falling from a loose lattice in a box (thesis section 3.4.1's
 // benchmark); packed: packed_polyhedra, every body pressed on its six axial neighbours.
-// table_in_memory: read the shape table from device memory instead of the kernel arguments.
 // floor_tiles > 1: the floor as floor_tiles^2 polygons (world-surface scaling).
-inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, bool table_in_memory = false,
-                    int floor_tiles = 1) {
+inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, int floor_tiles = 1) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   PolyhedronShape<float> shape;
   const ConvexShape convex = load_shape(std::string("data/shapes/") + shape_name + ".shape");
@@ -223,16 +221,10 @@ inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long 
   PairTable<Law> laws;
   laws.set(0, 0, law);
   laws.set(0, 1, law);
-  Buffer<PolyhedronTable<float>, DefaultSpace> table_copy(1);
-  if (table_in_memory) {
-    copy_n(&shape.table, 1, table_copy.data(), Host{}, DefaultSpace{});
-    shape.table_in_memory = table_copy.data();
-  }
   const int surfaces = static_cast<int>(scene.world.polygons.size() + scene.world.cylinders.size());
   Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(
       scene.params, laws, scene.world, std::move(scene.particles), shape);
-  const std::string label = std::string(shape_name) + (table_in_memory ? "@mem" : "");
-  Row row = measure(sim, label.c_str(), "linear", "float", kind == PolyScene::packed ? "packed" : "free-fall", surfaces, warmup, steps);
+  Row row = measure(sim, shape_name, "linear", "float", kind == PolyScene::packed ? "packed" : "free-fall", surfaces, warmup, steps);
   if (sim.removed_count() != 0) std::printf("WARNING: %d bodies left the box\n", static_cast<int>(sim.removed_count()));
   return row;
 }

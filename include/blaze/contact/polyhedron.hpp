@@ -126,17 +126,17 @@ struct PolyhedronShape {
 #else
   static constexpr int kMinBlocks = 4;
 #endif
-  // The shape table travels by value in every kernel's arguments (CUDA's constant bank). A copy
-  // in device memory can be named instead, to measure the two placements (bench/).
+  // The shape table travels by value in every kernel's arguments: CUDA's constant bank, read
+  // through the constant cache (one broadcast when a warp reads the same entry). Nothing may
+  // choose between it and another copy at run time: a pointer that could be either turns every
+  // table read into a generic load through L1 (issue 6: the former table_in_memory switch did
+  // that to both placements, which is why they measured the same).
   PolyhedronTable<Real> table;
-  const PolyhedronTable<Real>* table_in_memory = nullptr;
   // Edge pairs A.edges x B.edges up to which the arcs are tested pair by pair; above, by bit sets
   // (ArcSets). Both give the same contacts (test polyhedron_contact/edge_pair_enumerations_agree).
   int direct_edge_pairs = 300;
 
-  BLAZE_HD const PolyhedronData<Real>& data(int type) const {
-    return table_in_memory ? table_in_memory->type[type] : table.type[type];
-  }
+  BLAZE_HD const PolyhedronData<Real>& data(int type) const { return table.type[type]; }
 
   struct Body {
     Vec3<Real> x;
