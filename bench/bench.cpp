@@ -12,8 +12,7 @@
 // 3.4e7 (the thesis's largest) and --largest-cubes (default 1e8).
 // Prints a table and writes bench/results/<device>-<date>[-TAG].csv. Options: --out DIR, --skin S
 // (skin in radii, default 0.2), --min-n N, --max-n N, --tag TAG, --cases
-// spheres,polyhedra,packed,surfaces,skip,mill,largest (default all but largest),
-// --direct-edge-pairs P (polyhedra: edge pairs up to which the arcs are tested pair by pair).
+// spheres,polyhedra,packed,surfaces,skip,mill,largest (default all but largest).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -79,7 +78,6 @@ int main(int argc, char** argv) {
     if (opt == "--largest-spheres") largest_spheres = std::stol(argv[a + 1]);
     if (opt == "--largest-cubes") largest_cubes = std::stol(argv[a + 1]);
     if (opt == "--skin") g_skin_fraction = std::stod(argv[a + 1]);
-    if (opt == "--direct-edge-pairs") g_direct_edge_pairs = std::stoi(argv[a + 1]);
     if (opt == "--max-n") max_n = std::stol(argv[a + 1]);
     if (opt == "--min-n") min_n = std::stol(argv[a + 1]);
     if (opt == "--cases") cases = argv[a + 1];

@@ -55,9 +55,6 @@ inline ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
 }
 
 inline double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
-// Edge pairs up to which the separating-axis test checks Gauss-map arcs pair by pair
-// (PolyhedronShape::direct_edge_pairs; --direct-edge-pairs, for lever measurements); -1: the default.
-inline int g_direct_edge_pairs = -1;
 
 inline std::string skin_tag() {
   if (g_skin_fraction == 0.2) return "";
@@ -211,7 +208,6 @@ inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long 
   PolyhedronShape<float> shape;
   const ConvexShape convex = load_shape(std::string("data/shapes/") + shape_name + ".shape");
   shape.table.add(convex, kDensity);
-  if (g_direct_edge_pairs >= 0) shape.direct_edge_pairs = g_direct_edge_pairs;
   const double k = 1e5, dt = kPi * std::sqrt(0.5 * shape.table.type[0].mass / k) / 25;
   auto scene = kind == PolyScene::packed ? packed_polyhedra(shape.table, 0, static_cast<int>(n), 42, dt, drawn_orientation(convex))
                                          : polyhedron_packing(shape.table, 0, static_cast<int>(n), 42, dt);

@@ -22,8 +22,6 @@ struct NeighbourView {
   BLAZE_HD Index& at(Index k, Index i) const {
     return index[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
   }
-  // Particle i's entry 0; entry k + 1 is `stride` further on.
-  BLAZE_HD const Index* column(Index i) const { return index + i; }
 };
 
 // Line 1: key = cell hash (eq. 2.1), or the outside key for particles that left the domain.

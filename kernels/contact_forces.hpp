@@ -41,9 +41,8 @@ struct ContactForces {
     Index vertex_face = 0, edge_edge = 0;
     Real deepest = 0;
     const Index count = min_r(list.count[i], list.capacity);
-    const Index* entry = list.column(i);  // walked by the stride: no 64-bit k x stride per neighbour
-    for (Index k = 0; k < count; ++k, entry += list.stride) {
-      const Index j = *entry;
+    for (Index k = 0; k < count; ++k) {
+      const Index j = list.at(k, i);
       const auto bj = shape.body(p, j);
       ContactGeometry<Real> g;
       if (i < j) {

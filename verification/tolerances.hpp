@@ -75,8 +75,9 @@ constexpr double contact_missed_depth = 1e-6;
 constexpr double contact_false_gap = 1e-12;
 constexpr double contact_axis_tie = 1e-9;
 constexpr double contact_normal_degrees = 1.0;
-// The two edge-pair enumerations (pairwise arcs, bit sets) are compared bitwise (no tolerance: the
-// same axes in the same order); 5000 pairs per shape combination, 36 combinations.
+// The bit-set selection of Minkowski-face edge pairs is compared exactly with the pairwise
+// Gauss-map arc test (no tolerance: the same signs); 5000 orientations per shape combination,
+// 36 combinations.
 constexpr long edge_pair_enumeration_pairs = 5000;
 // The packed benchmark bed (packed_polyhedra): every axial neighbour pair touches, with an overlap
 // of at most 3% of the pitch (0.99 pitch ratio: 1%, plus the 0.01 rad tilts of both bodies).

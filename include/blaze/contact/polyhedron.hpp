@@ -63,29 +63,35 @@ namespace polyhedron_detail {
 // the faces left and right of eb (c.(b x a) = -s_L) and arc_B = d x c = n_R x n_L (a table
 // constant, PolyhedronData::edge_arc), the test reads
 //   opposite(s_L, s_R) and opposite(a.arc_B, b.arc_B) and opposite(s_L, b.arc_B).
-BLAZE_HD inline bool opposite(bool x_pos, bool x_neg, bool y_pos, bool y_neg) { return (x_pos && y_neg) || (x_neg && y_pos); }
-template <class Real>
-BLAZE_HD inline bool arcs_cross(Real s_left, Real s_right, Real a_arc, Real b_arc) {
-  const Real z(0);
-  return opposite(s_left > z, s_left < z, s_right > z, s_right < z) && opposite(a_arc > z, a_arc < z, b_arc > z, b_arc < z) &&
-         opposite(s_left > z, s_left < z, b_arc > z, b_arc < z);
-}
-
-// The same test for all of B's edges at once, as 64-bit sets (issue 6: testing the arcs pair by
-// pair was most of a packed dodecahedron step):
+// It is taken for all of B's edges at once, as 64-bit sets (issue 6):
 //   for each face g of A: the edges eb with n_A[g].arc_B[eb] > 0 (pos[g]) or < 0 (neg[g]);
 //   for edge ea: the signs s_f = n_B[f].(b x a) for each face f of B, turned into edge sets
-//     through the table's edges_left_of / edges_right_of.
-// Then the candidates of ea are one AND-OR expression, visited in increasing eb as the pairwise
-// test visits them, so both give the same contact to the last bit.
-// Measured on the H200 (1e6 bodies): dodecahedra (30 x 30 edge pairs) 12.2 ms per step for the
-// contacts instead of 17.8 (packed); cubes and octahedra (12 x 12) were slower with the sets (the
-// 512 B of sets per thread), so pairs of at most PolyhedronShape::direct_edge_pairs (300) test
-// the arcs one by one.
+//     through the table's edges_left_of / edges_right_of;
+// then the candidates of ea are one AND-OR expression: F_A E_B + E_A F_B dot products instead of
+// 4 E_A E_B. Measured on the H200 at 1e6 bodies against testing the pairs one by one: packed
+// dodecahedra 12.2 ms per step for the contacts instead of 17.8 (the first version, which held
+// B's vertices per thread); with the table read in B's axes, falling cubes 2.27 ms instead of
+// 2.71, packed cubes 25.7 instead of 28.2, octahedra level (bench/results/levers/).
+// verification/test_polyhedron_contact.cpp checks the sets against the pairwise test.
 struct ArcSets {
   std::uint64_t pos[kMaxFaces], neg[kMaxFaces];  // over B's edges, per face of A
 };
-// B-edge sets for edge ea of A (its faces fa0 = a, fa1 = b; axis = b x a, in B's axes).
+// The sets of every face of A; r turns A's body frame into B's axes.
+template <class Real>
+BLAZE_HD inline void arc_sets(const PolyhedronData<Real>& A, const PolyhedronData<Real>& B, const Mat3<Real>& r,
+                              ArcSets& sets) {
+  for (int g = 0; g < A.face_count; ++g) {
+    const Vec3<Real> m = r * A.normal[g];
+    std::uint64_t pos = 0, neg = 0;
+    for (int eb = 0; eb < B.edge_count; ++eb) {
+      const Real s = dot(m, B.edge_arc[eb]);
+      if (s > Real(0)) pos |= std::uint64_t(1) << eb;
+      if (s < Real(0)) neg |= std::uint64_t(1) << eb;
+    }
+    sets.pos[g] = pos, sets.neg[g] = neg;
+  }
+}
+// B's edges whose arcs cross that of A's edge ea (faces fa0 = a, fa1 = b; axis = b x a, in B's axes).
 template <class Real>
 BLAZE_HD inline std::uint64_t crossing_edges(const PolyhedronData<Real>& B, const Vec3<Real>& axis, const ArcSets& sets,
                                             int fa0, int fa1) {
@@ -99,6 +105,11 @@ BLAZE_HD inline std::uint64_t crossing_edges(const PolyhedronData<Real>& B, cons
   const std::uint64_t opposite_a = (sets.pos[fa0] & sets.neg[fa1]) | (sets.neg[fa0] & sets.pos[fa1]);
   const std::uint64_t left_against_b = (left_pos & sets.neg[fa1]) | (left_neg & sets.pos[fa1]);
   return opposite_b & opposite_a & left_against_b;
+}
+// Edge ea's axis b x a in B's axes.
+template <class Real>
+BLAZE_HD inline Vec3<Real> edge_axis_of(const PolyhedronData<Real>& A, const Mat3<Real>& r, int ea) {
+  return cross(r * A.normal[A.edge_face[ea][1]], r * A.normal[A.edge_face[ea][0]]);
 }
 
 // Midpoint of the closest points of segments p0 + s u and q0 + t w, s, t in [0, 1].
@@ -132,9 +143,6 @@ struct PolyhedronShape {
   // table read into a generic load through L1 (issue 6: the former table_in_memory switch did
   // that to both placements, which is why they measured the same).
   PolyhedronTable<Real> table;
-  // Edge pairs A.edges x B.edges up to which the arcs are tested pair by pair; above, by bit sets
-  // (ArcSets). Both give the same contacts (test polyhedron_contact/edge_pair_enumerations_agree).
-  int direct_edge_pairs = 300;
 
   BLAZE_HD const PolyhedronData<Real>& data(int type) const { return table.type[type]; }
 
@@ -272,38 +280,14 @@ struct PolyhedronShape {
       a0 = r * A.vertex[A.edge_vertex[ea][0]];
       da = r * (A.vertex[A.edge_vertex[ea][1]] - A.vertex[A.edge_vertex[ea][0]]);
     };
-    if (A.edge_count * B.edge_count <= direct_edge_pairs) {
-      for (int ea = 0; ea < A.edge_count; ++ea) {
-        Vec3<Real> a0, da;
-        edge_of_a(ea, a0, da);
-        const Vec3<Real> na = r * A.normal[A.edge_face[ea][0]], nb = r * A.normal[A.edge_face[ea][1]];
-        const Vec3<Real> axis = cross(nb, na);
-        for (int eb = 0; eb < B.edge_count; ++eb)
-          if (arcs_cross(dot(B.normal[B.edge_face[eb][0]], axis), dot(B.normal[B.edge_face[eb][1]], axis),
-                         dot(na, B.edge_arc[eb]), dot(nb, B.edge_arc[eb])) &&
-              !edge_axis_test(ea, eb, a0, da))
-            return ContactGeometry<Real>::none();
-      }
-    } else {
-      ArcSets sets;
-      for (int g = 0; g < A.face_count; ++g) {
-        const Vec3<Real> m = r * A.normal[g];
-        std::uint64_t pos = 0, neg = 0;
-        for (int eb = 0; eb < B.edge_count; ++eb) {
-          const Real s = dot(m, B.edge_arc[eb]);
-          if (s > Real(0)) pos |= std::uint64_t(1) << eb;
-          if (s < Real(0)) neg |= std::uint64_t(1) << eb;
-        }
-        sets.pos[g] = pos, sets.neg[g] = neg;
-      }
-      for (int ea = 0; ea < A.edge_count; ++ea) {
-        Vec3<Real> a0, da;
-        edge_of_a(ea, a0, da);
-        const int fa0 = A.edge_face[ea][0], fa1 = A.edge_face[ea][1];
-        const Vec3<Real> axis = cross(r * A.normal[fa1], r * A.normal[fa0]);
-        for (std::uint64_t todo = crossing_edges(B, axis, sets, fa0, fa1); todo != 0; todo &= todo - 1)
-          if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return ContactGeometry<Real>::none();
-      }
+    ArcSets sets;
+    arc_sets(A, B, r, sets);
+    for (int ea = 0; ea < A.edge_count; ++ea) {
+      Vec3<Real> a0, da;
+      edge_of_a(ea, a0, da);
+      for (std::uint64_t todo = crossing_edges(B, edge_axis_of(A, r, ea), sets, A.edge_face[ea][0], A.edge_face[ea][1]);
+           todo != 0; todo &= todo - 1)
+        if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return ContactGeometry<Real>::none();
     }
     if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;
 
