@@ -222,9 +222,9 @@ struct PolyhedronShape {
 
   // The test runs in A's centre with B's axes: B's vertices (+ u), normals and edge arcs are read
   // from the table as stored (uniform reads, one broadcast per warp), and A's features are turned
-  // by r = R_B^T R_A one at a time. Nothing is held per thread: B's vertices and planes held in
-  // per-thread arrays (896 B) lived in local memory and were most of the kernel's DRAM traffic
-  // (issue 6, Nsight Compute: 13-15 GB per launch at 1e6 bodies).
+  // by r = R_B^T R_A one at a time. Only the edge sets (ArcSets) stay per thread: B's vertices and
+  // planes, once held in per-thread arrays (896 B), lived in local memory and were most of the
+  // kernel's DRAM traffic (issue 6, Nsight Compute: 13-15 GB per launch at 1e6 bodies, now 2-4).
   BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = data(a.type);
