@@ -2,7 +2,6 @@
 // the per-step test of whether the list is still valid.
 #pragma once
 #include <cstdint>
-#include "blaze/contact/pair_hint.hpp"
 #include "blaze/grid/grid_spec.hpp"
 #include "blaze/particles/particle_store.hpp"
 
@@ -18,17 +17,12 @@ struct NeighbourView {
   Index* count;
   Index stride;
   Index capacity;
-  // One 16-bit word per entry for the shape policy (pair_hint.hpp), or null where it keeps none.
-  std::uint16_t* hint;
   // Entry k of particle i; the offset is taken in 64 bits (capacity x N passes 2^31 above ~1e8
   // particles).
-  BLAZE_HD std::size_t offset(Index k, Index i) const {
-    return static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i);
+  BLAZE_HD Index& at(Index k, Index i) const {
+    return index[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
   }
-  BLAZE_HD Index& at(Index k, Index i) const { return index[offset(k, i)]; }
-  BLAZE_HD std::uint16_t* hint_at(Index k, Index i) const { return hint != nullptr ? hint + offset(k, i) : nullptr; }
 };
-
 
 // Line 1: key = cell hash (eq. 2.1), or the outside key for particles that left the domain.
 template <class Real>
@@ -91,10 +85,7 @@ struct BuildNeighbours {
             if (static_cast<Index>(j) == i) continue;
             const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i)
             if (norm2(position.get(static_cast<Index>(j)) - xi) < reach * reach) {
-              if (count < list.capacity) {
-                list.at(count, i) = static_cast<Index>(j);
-                if (list.hint != nullptr) *list.hint_at(count, i) = kNoPairHint;
-              }
+              if (count < list.capacity) list.at(count, i) = static_cast<Index>(j);
               ++count;
             }
           }

@@ -4,8 +4,6 @@
 // no atomics are needed and the summation order is the same on every backend. Both sides call
 // collide(lower index, higher index) and the higher one flips the normal, so the two see exactly
 // the same geometry (Newton's third law holds to the last bit of the geometry).
-// A shape that keeps a word per list entry (keeps_pair_hints_v: polyhedra keep the pair's last
-// separating axis) gets entry k's word; both sides of a pair keep their own copy.
 // With Features::statistics each particle also counts its vertex-face and edge-edge contacts;
 // with Features::monitor it keeps its deepest overlap / radius (reset by the host).
 #pragma once
@@ -46,15 +44,11 @@ struct ContactForces {
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       const auto bj = shape.body(p, j);
-      const auto collide = [&](const auto& a, const auto& b) {
-        if constexpr (keeps_pair_hints_v<Shape>) return shape.collide(a, b, list.hint_at(k, i));
-        else return shape.collide(a, b);
-      };
       ContactGeometry<Real> g;
       if (i < j) {
-        g = collide(bi, bj);
+        g = shape.collide(bi, bj);
       } else {
-        g = collide(bj, bi);
+        g = shape.collide(bj, bi);
         g.normal = -g.normal;
       }
       if (!g.touching) continue;

@@ -79,14 +79,6 @@ constexpr double contact_normal_degrees = 1.0;
 // Gauss-map arc test (no tolerance: the same signs); 5000 orientations per shape combination,
 // 36 combinations.
 constexpr long edge_pair_enumeration_pairs = 5000;
-// Kept separating axes (PolyhedronShape::kKeepsPairHints) are compared exactly with the full test
-// (no tolerance: the kept axis is evaluated with the same expressions); 200 paths of 40 steps per
-// shape combination, each step turning both bodies by 0.02 rad and moving B by 1% of the reach,
-// so that a kept axis is reused for a few steps before it stops separating.
-constexpr long kept_axis_paths = 200;
-constexpr long kept_axis_steps = 40;
-constexpr double kept_axis_turn = 0.02;   // rad
-constexpr double kept_axis_shift = 0.01;  // of the sum of the bounding radii
 // The packed benchmark bed (packed_polyhedra): every axial neighbour pair touches, with an overlap
 // of at most 3% of the pitch (0.99 pitch ratio: 1%, plus the 0.01 rad tilts of both bodies).
 constexpr double packed_overlap_over_pitch = 0.03;

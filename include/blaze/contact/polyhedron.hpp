@@ -39,7 +39,6 @@
 // so |L| is conserved exactly in torque-free motion and the energy to second order.
 #pragma once
 #include "blaze/contact/contact_geometry.hpp"
-#include "blaze/contact/pair_hint.hpp"
 #include "blaze/contact/sphere.hpp"
 #include "blaze/core/mat3.hpp"
 #include "blaze/particles/particle_store.hpp"
@@ -73,8 +72,7 @@ namespace polyhedron_detail {
 // dodecahedra 12.2 ms per step for the contacts instead of 17.8 (the first version, which held
 // B's vertices per thread); with the table read in B's axes, falling cubes 2.27 ms instead of
 // 2.71, packed cubes 25.7 instead of 28.2, octahedra level (bench/results/levers/).
-// verification/test_polyhedron_contact.cpp checks the sets (and arcs_cross, the one-pair form)
-// against the pairwise test.
+// verification/test_polyhedron_contact.cpp checks the sets against the pairwise test.
 struct ArcSets {
   std::uint64_t pos[kMaxFaces], neg[kMaxFaces];  // over B's edges, per face of A
 };
@@ -113,19 +111,6 @@ template <class Real>
 BLAZE_HD inline Vec3<Real> edge_axis_of(const PolyhedronData<Real>& A, const Mat3<Real>& r, int ea) {
   return cross(r * A.normal[A.edge_face[ea][1]], r * A.normal[A.edge_face[ea][0]]);
 }
-// The same decision for one pair (ea, eb), from the same signs: the test of a kept separating axis.
-BLAZE_HD inline bool opposite(bool x_pos, bool x_neg, bool y_pos, bool y_neg) { return (x_pos && y_neg) || (x_neg && y_pos); }
-template <class Real>
-BLAZE_HD inline bool arcs_cross(const PolyhedronData<Real>& A, const PolyhedronData<Real>& B, const Mat3<Real>& r, int ea,
-                                int eb) {
-  const Vec3<Real> axis = edge_axis_of(A, r, ea);
-  const Real s_left = dot(B.normal[B.edge_face[eb][0]], axis), s_right = dot(B.normal[B.edge_face[eb][1]], axis);
-  const Real a_arc = dot(r * A.normal[A.edge_face[ea][0]], B.edge_arc[eb]);
-  const Real b_arc = dot(r * A.normal[A.edge_face[ea][1]], B.edge_arc[eb]);
-  const Real z(0);
-  return opposite(s_left > z, s_left < z, s_right > z, s_right < z) && opposite(a_arc > z, a_arc < z, b_arc > z, b_arc < z) &&
-         opposite(s_left > z, s_left < z, b_arc > z, b_arc < z);
-}
 
 // Midpoint of the closest points of segments p0 + s u and q0 + t w, s, t in [0, 1].
 template <class Real>
@@ -161,12 +146,6 @@ struct PolyhedronShape {
 
   BLAZE_HD const PolyhedronData<Real>& data(int type) const { return table.type[type]; }
 
-  // A word per neighbour-list entry (kernels/contact_forces.hpp): the axis that last separated
-  // the pair, kNoPairHint after each list build and while the pair touches. Face f of A:
-  // kHintFaceA << 12 | f; of B: kHintFaceB << 12 | f; edges ea, eb: kHintEdges << 12 | ea << 6 | eb.
-  static constexpr bool kKeepsPairHints = true;
-  static constexpr int kHintFaceA = 0, kHintFaceB = 1, kHintEdges = 2;
-
   struct Body {
     Vec3<Real> x;
     Quat<Real> q;
@@ -180,8 +159,7 @@ struct PolyhedronShape {
 
   BLAZE_HD bool is_sphere(const Body& b) const { return data(b.type).vertex_count == 0; }
 
-  // hint: this pair's word in the neighbour list (kKeepsPairHints), or null.
-  BLAZE_HD ContactGeometry<Real> collide(const Body& a, const Body& b, std::uint16_t* hint = nullptr) const {
+  BLAZE_HD ContactGeometry<Real> collide(const Body& a, const Body& b) const {
     if (is_sphere(a) || is_sphere(b)) {
       if (is_sphere(a) && is_sphere(b))
         return SphereShape{}.collide(SphereShape::Body<Real>{a.x, data(a.type).bounding_radius, a.index},
@@ -191,7 +169,7 @@ struct PolyhedronShape {
       g.normal = -g.normal;
       return g;
     }
-    return polyhedron_polyhedron(a, b, hint);
+    return polyhedron_polyhedron(a, b);
   }
 
   // Normal from the polyhedron towards the sphere of centre c, radius r.
@@ -247,7 +225,7 @@ struct PolyhedronShape {
   // by r = R_B^T R_A one at a time. Only the edge sets (ArcSets) stay per thread: B's vertices and
   // planes, once held in per-thread arrays (896 B), lived in local memory and were most of the
   // kernel's DRAM traffic (issue 6, Nsight Compute: 13-15 GB per launch at 1e6 bodies, now 2-4).
-  BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b, std::uint16_t* hint) const {
+  BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = data(a.type);
     const PolyhedronData<Real>& B = data(b.type);
@@ -259,108 +237,72 @@ struct PolyhedronShape {
     const Vec3<Real> u = rb.transpose_times(d);                          // B's centre
     const auto vertex_b = [&](int k) { return B.vertex[k] + u; };
     const auto offset_b = [&](int f) { return B.offset[f] + dot(B.normal[f], u); };
-    // Separation along face f of A: min over B's vertices of (r n).(v + u) - h; along face f of
-    // B: min over A's vertices of n.(r v) - h_B = (r^T n).v - h_B.
-    const auto face_a_separation = [&](int f) {
+    // Face axes of A: min over B's vertices of (r n).(v + u) - h; then of B: min over A's
+    // vertices of n.(r v) - h_B = (r^T n).v - h_B.
+    Real best = -reach;
+    int kind = -1, index = -1;  // kind 0: face of A, 1: face of B, 2: edge pair
+    for (int f = 0; f < A.face_count; ++f) {
       const Vec3<Real> m = r * A.normal[f];
       Real s = dot(m, B.vertex[0]);
       for (int k = 1; k < B.vertex_count; ++k) s = min_r(s, dot(m, B.vertex[k]));
-      return s + (dot(m, u) - A.offset[f]);
-    };
-    const auto face_b_separation = [&](int f) {
+      s += dot(m, u) - A.offset[f];
+      if (s > Real(0)) return ContactGeometry<Real>::none();
+      if (s > best) best = s, kind = 0, index = f;
+    }
+    for (int f = 0; f < B.face_count; ++f) {
       const Vec3<Real> m = r.transpose_times(B.normal[f]);
       Real s = dot(m, A.vertex[0]);
       for (int k = 1; k < A.vertex_count; ++k) s = min_r(s, dot(m, A.vertex[k]));
-      return s - offset_b(f);
+      s -= offset_b(f);
+      if (s > Real(0)) return ContactGeometry<Real>::none();
+      if (s > best) best = s, kind = 1, index = f;
+    }
+    // Edge pairs that are faces of the Minkowski difference.
+    Real edge_best = -reach;
+    int edge_a = -1, edge_b = -1;
+    Vec3<Real> edge_axis{0, 0, 0};
+    // The separation along the axis of edges ea, eb (if they are not parallel); false: separated.
+    const auto edge_axis_test = [&](int ea, int eb, const Vec3<Real>& a0, const Vec3<Real>& da) {
+      const Vec3<Real> b0 = vertex_b(B.edge_vertex[eb][0]);
+      const Vec3<Real> db = B.vertex[B.edge_vertex[eb][1]] - B.vertex[B.edge_vertex[eb][0]];
+      Vec3<Real> n = cross(da, db);
+      const Real len2 = norm2(n);
+      if (!(len2 > Real(1e-12) * norm2(da) * norm2(db))) return true;  // parallel edges: a face axis covers them
+      n *= Real(1) / sqrt_r(len2);
+      if (dot(n, a0) < Real(0)) n = -n;
+      const Real s = dot(n, b0 - a0);
+      if (s > Real(0)) return false;
+      if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
+      return true;
     };
     // A's edge ea turned into B's axes: first vertex and direction.
     const auto edge_of_a = [&](int ea, Vec3<Real>& a0, Vec3<Real>& da) {
       a0 = r * A.vertex[A.edge_vertex[ea][0]];
       da = r * (A.vertex[A.edge_vertex[ea][1]] - A.vertex[A.edge_vertex[ea][0]]);
     };
-    // The axis n of edges ea (a0, da) and eb, pointing away from A's centre, and the separation s
-    // along it (meaningful when their arcs cross); false when the edges are parallel (no axis: a
-    // face axis covers them).
-    const auto edge_separation = [&](int eb, const Vec3<Real>& a0, const Vec3<Real>& da, Vec3<Real>& n, Real& s) {
-      const Vec3<Real> b0 = vertex_b(B.edge_vertex[eb][0]);
-      const Vec3<Real> db = B.vertex[B.edge_vertex[eb][1]] - B.vertex[B.edge_vertex[eb][0]];
-      n = cross(da, db);
-      const Real len2 = norm2(n);
-      if (!(len2 > Real(1e-12) * norm2(da) * norm2(db))) return false;
-      n *= Real(1) / sqrt_r(len2);
-      if (dot(n, a0) < Real(0)) n = -n;
-      s = dot(n, b0 - a0);
-      return true;
-    };
-    // The axis that separated this pair last time (a neighbour-list entry's hint) is tried first:
-    // if it still separates, so would the full test below (the same expressions on the same
-    // axis), so the answer is the same. Most listed pairs that do not touch stay apart along one
-    // axis for many steps (14 of the 25.7 entries per cube of the packed bed).
-    if (hint != nullptr && *hint != kNoPairHint) {
-      const int code = *hint & 0xFFF;
-      bool apart = false;
-      if ((*hint >> 12) == kHintFaceA) {
-        apart = code < A.face_count && face_a_separation(code) > Real(0);
-      } else if ((*hint >> 12) == kHintFaceB) {
-        apart = code < B.face_count && face_b_separation(code) > Real(0);
-      } else if ((code >> 6) < A.edge_count && (code & 63) < B.edge_count && arcs_cross(A, B, r, code >> 6, code & 63)) {
-        Vec3<Real> a0, da, n;
-        Real s = 0;
-        edge_of_a(code >> 6, a0, da);
-        apart = edge_separation(code & 63, a0, da, n, s) && s > Real(0);
-      }
-      if (apart) return ContactGeometry<Real>::none();
-    }
-    const auto separated = [&](int kind, int code) {
-      if (hint != nullptr) *hint = static_cast<std::uint16_t>(kind << 12 | code);
-      return ContactGeometry<Real>::none();
-    };
-    Real best = -reach;
-    int kind = -1, index = -1;  // kind kHintFaceA, kHintFaceB or kHintEdges
-    for (int f = 0; f < A.face_count; ++f) {
-      const Real s = face_a_separation(f);
-      if (s > Real(0)) return separated(kHintFaceA, f);
-      if (s > best) best = s, kind = kHintFaceA, index = f;
-    }
-    for (int f = 0; f < B.face_count; ++f) {
-      const Real s = face_b_separation(f);
-      if (s > Real(0)) return separated(kHintFaceB, f);
-      if (s > best) best = s, kind = kHintFaceB, index = f;
-    }
-    // Edge pairs that are faces of the Minkowski difference.
-    Real edge_best = -reach;
-    int edge_a = -1, edge_b = -1;
-    Vec3<Real> edge_axis{0, 0, 0};
     ArcSets sets;
     arc_sets(A, B, r, sets);
     for (int ea = 0; ea < A.edge_count; ++ea) {
       Vec3<Real> a0, da;
       edge_of_a(ea, a0, da);
       for (std::uint64_t todo = crossing_edges(B, edge_axis_of(A, r, ea), sets, A.edge_face[ea][0], A.edge_face[ea][1]);
-           todo != 0; todo &= todo - 1) {
-        const int eb = lowest_bit(todo);
-        Vec3<Real> n;
-        Real s = 0;
-        if (!edge_separation(eb, a0, da, n, s)) continue;
-        if (s > Real(0)) return separated(kHintEdges, ea << 6 | eb);
-        if (s > edge_best) edge_best = s, edge_a = ea, edge_b = eb, edge_axis = n;
-      }
+           todo != 0; todo &= todo - 1)
+        if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return ContactGeometry<Real>::none();
     }
-    if (edge_a >= 0 && edge_best > best) best = edge_best, kind = kHintEdges;
-    if (hint != nullptr && *hint != kNoPairHint) *hint = kNoPairHint;  // touching: no axis to keep
+    if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;
 
     const auto vertex_a = [&](int k) { return r * A.vertex[k]; };
     Vec3<Real> n{0, 0, 0}, point{0, 0, 0};
     Real overlap = -best;
     ContactKind contact_kind = ContactKind::vertex_face;
-    if (kind == kHintEdges) {
+    if (kind == 2) {
       n = edge_axis;
       contact_kind = ContactKind::edge_edge;
       Vec3<Real> a0, da;
       edge_of_a(edge_a, a0, da);
       const Vec3<Real> b0 = vertex_b(B.edge_vertex[edge_b][0]);
       point = segment_midpoint(a0, da, b0, vertex_b(B.edge_vertex[edge_b][1]) - b0);
-    } else if (kind == kHintFaceA) {
+    } else if (kind == 0) {
       n = r * A.normal[index];
       point = incident_point(n, A.offset[index], vertex_b, B.vertex_count);
     } else {

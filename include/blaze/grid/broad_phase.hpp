@@ -25,9 +25,7 @@ class BroadPhase {
     double energy = 0;
   };
 
-  // keep_hints: a 16-bit word per list entry for the shape policy (keeps_pair_hints_v).
-  BroadPhase(const GridSpec<Real>& grid, Real skin, bool keep_hints = false)
-      : grid_(grid), skin_(skin), keep_hints_(keep_hints) {
+  BroadPhase(const GridSpec<Real>& grid, Real skin) : grid_(grid), skin_(skin) {
     cell_start_.resize(grid_.cell_count() + 1);
     cell_end_.resize(grid_.cell_count() + 1);
     end_bit_ = 1;
@@ -103,13 +101,13 @@ class BroadPhase {
   // Device memory held by the broad phase (grid cells, sort buffers, neighbour list), bytes.
   std::size_t bytes() const {
     std::size_t b = (keys_.size() + cell_start_.size() + cell_end_.size()) * sizeof(std::uint32_t);
-    b += (order_.size() + list_.size() + count_.size()) * sizeof(Index) + hint_.size() * sizeof(std::uint16_t);
+    b += (order_.size() + list_.size() + count_.size()) * sizeof(Index);
     for (const auto& c : reference_) b += c.size() * sizeof(Real);
     return b;
   }
 
   NeighbourView neighbours() {
-    return {list_.data(), count_.data(), stride_, capacity_, keep_hints_ ? hint_.data() : nullptr};
+    return {list_.data(), count_.data(), stride_, capacity_};
   }
 
  private:
@@ -121,7 +119,6 @@ class BroadPhase {
     count_.resize(std::max<std::size_t>(count_.size(), p.n));
     for (;;) {
       list_.resize(std::max<std::size_t>(list_.size(), static_cast<std::size_t>(capacity_) * p.n));
-      if (keep_hints_) hint_.resize(list_.size());
       for_each(Space{}, p.n,
                BuildNeighbours<Real>{grid_, p.position, p.radius, cell_start_.data(), cell_end_.data(), skin_,
                                      neighbours()});
@@ -141,8 +138,6 @@ class BroadPhase {
   Buffer<Index, Space> order_;
   Buffer<std::uint32_t, Space> cell_start_, cell_end_;
   Buffer<Index, Space> list_, count_;
-  bool keep_hints_;
-  Buffer<std::uint16_t, Space> hint_;
   Buffer<Real, Space> reference_[3];
   Index stride_ = 0;
   Index capacity_ = 16;

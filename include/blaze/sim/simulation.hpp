@@ -65,7 +65,7 @@ class Simulation {
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const ParticleState<Real>& particles, const Shape& shape = Shape{})
-      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(particles.radius)), params.skin, keeps_pair_hints_v<Shape>) {
+      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(particles.radius)), params.skin) {
     check_params(params);
     check_materials(laws, world, particles);
     store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);  // checks the lengths
@@ -82,8 +82,7 @@ class Simulation {
   // priming, so the next step is bit for bit the step the original run took.
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const SimulationSnapshot<Real>& snap, const Shape& shape = Shape{})
-      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField))), params.skin,
-               keeps_pair_hints_v<Shape>) {
+      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField))), params.skin) {
     check_params(params);
     ParticleState<Real> materials_only;
     materials_only.material = snap.store.material;
