@@ -21,19 +21,21 @@ struct WorldForces {
 
   BLAZE_HD void operator()(Index i) const {
     const auto body = shape.body(p, i);
-    const Vec3<Real> v = p.velocity.get(i);
-    const Vec3<Real> w = Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0};
-    const Real m = Real(1) / p.inv_mass[i];
-    const int mi = p.material[i];
-    Vec3<Real> f = p.force.get(i), t{0, 0, 0};
+    // A particle that touches no wall (most of them) reads its position and nothing else, and
+    // writes nothing: the force and the rest are read at the first wall contact. The sums are
+    // formed in the same order as when they were read up front, so the result is the same.
+    bool touched = false;
+    Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
     Real deepest = 0;
     const auto apply = [&](const ContactGeometry<Real>& g, int material) {
       if (!g.touching) return;
+      if (!touched) f = p.force.get(i), touched = true;
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - body.x;
       const Vec3<Real> zero{0, 0, 0};
-      const Vec3<Real> v_rel = Kinematics::relative(v, w, ri, zero, zero, zero);
-      const Vec3<Real> fw = laws(mi, material).force(g, v_rel, m);
+      const Vec3<Real> w = Features::rotation ? p.angular_velocity.get(i) : zero;
+      const Vec3<Real> v_rel = Kinematics::relative(p.velocity.get(i), w, ri, zero, zero, zero);
+      const Vec3<Real> fw = laws(p.material[i], material).force(g, v_rel, Real(1) / p.inv_mass[i]);
       f += fw;
       if constexpr (Features::rotation) t += cross(ri, fw);
     };
@@ -41,6 +43,7 @@ struct WorldForces {
       apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material);
     for (int k = 0; k < world.cylinder_count; ++k)
       apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material);
+    if (!touched) return;
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
     if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);

@@ -2,8 +2,11 @@
 // exact ballistic flight for velocity Verlet, and the convergence order of each scheme measured on
 // a harmonic contact oscillator: a sphere pressed into a linear-spring floor under gravity that
 // never leaves contact, y(t) = y_eq + A cos(w t), w = sqrt(k/m).
+#include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <random>
+#include <Eigen/Geometry>
 #include "verification/scenes.hpp"
 
 using namespace blaze;
@@ -32,6 +35,37 @@ BOOST_AUTO_TEST_CASE(quaternion_spin_one_revolution) {
     BOOST_TEST(std::fabs(p.y * p.y + p.z * p.z - 1) <= tol::spin_angle_double);
   }
   BOOST_TEST(max_norm_error <= tol::quaternion_norm_drift);
+}
+
+// One orientation step (core/quat.hpp) against the exact rotation by |w| dt about w, for step
+// angles from 1e-9 to 1 rad: both sides of the switch from the Taylor series to the sines (half
+// angle 0.05), random axes and starting orientations, double and float.
+using Reals = boost::mpl::list<float, double>;
+BOOST_AUTO_TEST_CASE_TEMPLATE(orientation_step_is_the_exact_rotation, Real, Reals) {
+  std::mt19937_64 rng(12345);
+  std::normal_distribution<double> g;
+  double worst = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double angle = std::pow(10.0, -9 + 9 * (k % 200) / 199.0) * (k % 2 ? 1.0 : 0.999);  // rad, per step
+    const Eigen::Vector3d axis = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+    const Eigen::Quaterniond q0 = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
+    const double dt = 1e-5, rate = angle / dt;
+    const Quat<Real> q{Real(q0.w()), Real(q0.x()), Real(q0.y()), Real(q0.z())};
+    const Vec3<Real> w{Real(rate * axis.x()), Real(rate * axis.y()), Real(rate * axis.z())};
+    const Quat<Real> step = integrate_orientation(q, w, Real(dt));
+    // The reference rotates the rounded inputs exactly (long double).
+    using L = long double;
+    const L wx = w.x, wy = w.y, wz = w.z, wn = std::sqrt(wx * wx + wy * wy + wz * wz), h = wn * L(Real(dt)) / 2;
+    const L c = std::cos(h), sn = std::sin(h) / wn;
+    const L dw = c, dx = sn * wx, dy = sn * wy, dz = sn * wz, qw = q.w, qx = q.x, qy = q.y, qz = q.z;
+    const L ew = dw * qw - dx * qx - dy * qy - dz * qz, ex = dw * qx + dx * qw + dy * qz - dz * qy;
+    const L ey = dw * qy - dx * qz + dy * qw + dz * qx, ez = dw * qz + dx * qy - dy * qx + dz * qw;
+    const L nq = std::sqrt(qw * qw + qx * qx + qy * qy + qz * qz);  // the rounded start is a unit quaternion only to rounding
+    for (L e : {std::fabs(step.w - ew / nq), std::fabs(step.x - ex / nq), std::fabs(step.y - ey / nq), std::fabs(step.z - ez / nq)})
+      worst = std::max(worst, static_cast<double>(e));
+  }
+  BOOST_TEST_MESSAGE("orientation step, " << (sizeof(Real) == 8 ? "double" : "float") << ": worst component error " << worst);
+  BOOST_TEST(worst <= (sizeof(Real) == 8 ? tol::orientation_step_double : tol::orientation_step_float));
 }
 
 BOOST_AUTO_TEST_CASE(velocity_verlet_is_exact_for_constant_acceleration) {

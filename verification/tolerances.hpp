@@ -29,6 +29,11 @@ constexpr double rest_speed_float = 1e-5;
 constexpr double spin_angle_double = 1e-9;
 // Unit quaternion norm after 1e5 renormalised steps.
 constexpr double quaternion_norm_drift = 1e-12;
+// One orientation step against the exact rotation (evaluated in long double), per
+// quaternion component: the step rounds each of 4 components a few times (eps q, the sum, the
+// renormalisation), so a few ulps of 1: 4e-16 in double, 4 float ulps (4.8e-7) in float.
+constexpr double orientation_step_double = 4e-16;
+constexpr double orientation_step_float = 4.8e-7;
 // Ballistic flight: velocity Verlet integrates constant acceleration exactly; what is left is
 // rounding of x + v dt over 1e4 steps.
 constexpr double ballistic_position = 1e-10;
