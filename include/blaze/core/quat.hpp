@@ -89,8 +89,10 @@ BLAZE_HD inline Quat<Real> integrate_orientation(const Quat<Real>& q, const Vec3
   if (h2 == Real(0)) return q;
   Real sinc, cos_m1;  // sin h / h, cos h - 1
   if (h2 <= Real(0.0025)) {
-    sinc = Real(1) - h2 * Real(1.0 / 6) * (Real(1) - h2 * Real(1.0 / 20) * (Real(1) - h2 * Real(1.0 / 42) * (Real(1) - h2 * Real(1.0 / 72))));
-    cos_m1 = -h2 * Real(0.5) * (Real(1) - h2 * Real(1.0 / 12) * (Real(1) - h2 * Real(1.0 / 30) * (Real(1) - h2 * Real(1.0 / 56))));
+    // 1 - h^2/3! + h^4/5! - h^6/7! + h^8/9!  and  -h^2/2! + h^4/4! - h^6/6! + h^8/8!, nested.
+    const Real one(1);
+    sinc = one - h2 * Real(1.0 / 6) * (one - h2 * Real(1.0 / 20) * (one - h2 * Real(1.0 / 42) * (one - h2 * Real(1.0 / 72))));
+    cos_m1 = -h2 * Real(0.5) * (one - h2 * Real(1.0 / 12) * (one - h2 * Real(1.0 / 30) * (one - h2 * Real(1.0 / 56))));
   } else {
     const Real h = sqrt_r(h2), quarter = sin_r(Real(0.5) * h);
     sinc = sin_r(h) / h;
