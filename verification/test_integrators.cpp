@@ -2,8 +2,8 @@
 // exact ballistic flight for velocity Verlet, and the convergence order of each scheme measured on
 // a harmonic contact oscillator: a sphere pressed into a linear-spring floor under gravity that
 // never leaves contact, y(t) = y_eq + A cos(w t), w = sqrt(k/m).
-#include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
+#include <boost/mpl/list.hpp>
 #include <cmath>
 #include <random>
 #include <Eigen/Geometry>
