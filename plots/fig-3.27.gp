@@ -9,12 +9,14 @@
 # the host, the thesis's rule (vertex-face whenever a vertex of either cube is inside the other,
 # edge-edge otherwise), which is what Fig 3.27 counts. Dashed: random first touches,
 # 9 pi / (24 + 9 pi) = 0.541 (integral geometry); dotted red: the thesis's 10% (a, b) and 30% (c);
-# (a) also: the issue's 15% bound and the settled phase (last 25% of the run) where it is asserted.
+# (a) also: the issue's 15% bound and the settled phase (last 25% of the run) where it is asserted
+# (pooled over the test's beds of different seeds; the curves show the first bed).
 set terminal pngcairo size 1000,700 font ',11'
 set output 'plots/fig-3.27.png'
 f = datadir.'/fig-3.27.dat'
 p_random = 9 * pi / (24 + 9 * pi)
-# Index 6, one row: start and end of the settled phase (s), its thesis-rule share, the bound.
+# Index 6, one row: start and end of the settled phase (s), its thesis-rule share over all beds,
+# the bound, the lowest and highest bed's share.
 stats f index 6 using 1 nooutput
 t_settled = STATS_min
 stats f index 6 using 2 nooutput
@@ -42,7 +44,7 @@ do for [k = 0:2] {
   if (k == 2) { set xlabel 't (s)' } else { unset xlabel }
   if (k == 0) {
     set object 1 rect from t_settled, graph 0 to t_end, graph 1 fc rgb '#fff2cc' fs solid 1.0 noborder behind
-    set label 1 sprintf('settled phase: thesis-rule share %.3f (bound %.2f)', settled_share, bound) \
+    set label 1 sprintf('settled phase, all beds: thesis-rule share %.3f (bound %.2f)', settled_share, bound) \
         at t_settled, 0.27 right offset -1, 0 font ',9' tc rgb '#2ca02c'
     plot f index k using 1:($3 > 0 ? $2 : 1/0) with lines lw 1.5 lc rgb '#1f77b4' title 'edge-edge share (SAT axis)', \
          f index k using 1:3 axes x1y2 with lines lw 1 lc rgb '#bbbbbb' title 'contacts (y2)', \

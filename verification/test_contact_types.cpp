@@ -360,50 +360,61 @@ void check_fractions(const std::string& case_name, const KindRun& run, double p_
                 run.final_thesis_rule, run.final_fraction);
 }
 
-// Scenario (a) by the thesis's rule once the bed has settled: the settled phase is the last
-// tol::contact_kind_settled_window of the run (samples every tol::contact_kind_thesis_rule_every
-// steps); the bed counts as settled when the phase's mean kinetic energy is a small share of the
-// run's peak. The share there (edge-edge over all contacts of the phase's samples) is the
-// issue's assertion; the share while the bed collapses (samples of the first third of the run
+// Scenario (a) by the thesis's rule once the bed has settled, pooled over beds that differ only
+// in their random orientations (tol::contact_kind_settled_seeds of them). The packing is chaotic:
+// a last-bit change anywhere (the orientation step's rounding, say) sends one bed down another
+// trajectory, whose settled share lies anywhere in the seeds' spread (0.097-0.151 measured), so
+// one trajectory is not a measurement of the share. The settled phase is the last
+// tol::contact_kind_settled_window of each run (samples every tol::contact_kind_thesis_rule_every
+// steps); a bed counts as settled when the phase's mean kinetic energy is a small share of its
+// run's peak. The share there (edge-edge over all contacts of all beds' phase samples) is the
+// issue's assertion; the share while the beds collapse (samples of the first third of each run
 // with >= n/2 contacts) shows it fall.
-void check_settled_share(const std::string& case_name, const KindRun& run, double duration, FigureData& fig) {
+void check_settled_share(const std::string& case_name, const std::vector<KindRun>& runs, double duration, FigureData& fig) {
   const double start = (1 - tol::contact_kind_settled_window) * duration;
   HostKinds settled, collapsing;
-  double peak = 0, kinetic = 0, lowest = 1, highest = 0;
+  double lowest = 1, highest = 0, worst_kinetic = 0;
   long n_settled = 0;
-  for (const Sample& x : run.samples) {
-    peak = std::max(peak, x.kinetic);
-    if (x.t > start) {
-      settled += x.host, kinetic += x.kinetic, ++n_settled;
-      lowest = std::min(lowest, x.host.thesis_share()), highest = std::max(highest, x.host.thesis_share());
+  std::string per_bed, course;
+  for (const KindRun& run : runs) {
+    HostKinds bed;
+    double peak = 0, kinetic = 0;
+    long n_bed = 0;
+    for (const Sample& x : run.samples) peak = std::max(peak, x.kinetic);
+    for (const Sample& x : run.samples) {
+      if (x.t > start) bed += x.host, kinetic += x.kinetic, ++n_bed;
+      if (x.t <= duration / 3 && 2 * (x.host.thesis_vertex_face + x.host.thesis_edge_edge) >= run.particles)
+        collapsing += x.host;
     }
-    if (x.t <= duration / 3 && 2 * (x.host.thesis_vertex_face + x.host.thesis_edge_edge) >= run.particles) collapsing += x.host;
+    BOOST_REQUIRE(n_bed > 0);
+    worst_kinetic = std::max(worst_kinetic, kinetic / static_cast<double>(n_bed) / peak);
+    settled += bed, n_settled += n_bed;
+    lowest = std::min(lowest, bed.thesis_share()), highest = std::max(highest, bed.thesis_share());
+    per_bed += " " + std::to_string(bed.thesis_share()).substr(0, 5);
   }
-  BOOST_REQUIRE(n_settled > 0);
-  kinetic /= static_cast<double>(n_settled);
-  // The share's course, in tenths of the run (for the report and the figure's reader).
-  std::string course;
+  // The share's course over the first bed, in tenths of the run (for the report and the figure).
   for (int k = 1; k <= 10; ++k) {
     HostKinds bin;
-    for (const Sample& x : run.samples)
+    for (const Sample& x : runs.front().samples)
       if (x.t > (k - 1) * duration / 10 && x.t <= k * duration / 10) bin += x.host;
     course += " " + std::to_string(bin.thesis_share()).substr(0, 5);
   }
-  BOOST_TEST_MESSAGE(case_name << ": thesis-rule edge-edge share per tenth of the run:" << course << "; settled phase (t > "
-                               << start << " s, " << n_settled << " samples): " << settled.thesis_share() << " (samples "
-                               << lowest << " to " << highest << "), kinetic energy " << kinetic / peak << " of its peak");
-  fig.block("settled phase of (a): t_start_s t_end_s thesis_rule_share bound");
-  fig.row(start, duration, settled.thesis_share(), tol::contact_kind_settled_share);
+  BOOST_TEST_MESSAGE(case_name << ": thesis-rule edge-edge share per tenth of the first bed's run:" << course
+                               << "; settled phase (t > " << start << " s, " << n_settled << " samples of " << runs.size()
+                               << " beds): " << settled.thesis_share() << " (beds:" << per_bed
+                               << "), largest mean kinetic energy " << worst_kinetic << " of its run's peak");
+  fig.block("settled phase of (a), all beds: t_start_s t_end_s thesis_rule_share bound lowest_bed highest_bed");
+  fig.row(start, duration, settled.thesis_share(), tol::contact_kind_settled_share, lowest, highest);
   const std::string phase = "last " + std::to_string(static_cast<int>(100 * tol::contact_kind_settled_window)) + "% of a " +
                             seconds(duration) + " run, every " + std::to_string(tol::contact_kind_thesis_rule_every) +
-                            " steps";
-  check_at_most({case_name, "bed settled: mean kinetic energy over the " + phase + " / its peak", "-",
+                            " steps, " + std::to_string(runs.size()) + " beds";
+  check_at_most({case_name, "beds settled: largest mean kinetic energy over the " + phase + " / its run's peak", "-",
                  "tol::contact_kind_settled_kinetic"},
-                kinetic / peak, tol::contact_kind_settled_kinetic);
+                worst_kinetic, tol::contact_kind_settled_kinetic);
   check_at_most({case_name, kRule + "edge-edge share over the settled phase (" + phase + ")", "<= 10%",
                  "issue 4: below 15%; thesis Fig 3.27a"},
                 settled.thesis_share(), tol::contact_kind_settled_share);
-  check_at_least({case_name, kRule + "edge-edge share while the bed collapses (first third, >= n/2 contacts), above the settled share",
+  check_at_least({case_name, kRule + "edge-edge share while the beds collapse (first third, >= n/2 contacts), above the settled share",
                   "-", "thesis 3.4.3: edge-edge share falls as the bed settles"},
                  collapsing.thesis_share(), settled.thesis_share());
 }
@@ -515,8 +526,16 @@ BOOST_AUTO_TEST_CASE(fig_3_27_edge_edge_fraction) {
   const std::string name_a = "Contact kinds (a): packing in a box (3.4.3, Fig 3.27a)";
   const std::string name_b = "Contact kinds (b): drum from rest (3.4.3, Fig 3.27b)";
   const std::string name_c = "Contact kinds (c): drum, 1 m/s to the wall (3.4.3, Fig 3.27c)";
-  const auto box = polyhedron_packing(shape.table, 0, static_cast<int>(tol::contact_kind_box_cubes), 3, mat.dt);
-  const KindRun a = run_scene(name_a, shape, cube, mat.law, box, box_duration, true, fig);
+  // Bed (a) with seed 3 is the figure's and the fraction checks'; seeds 4, 5, ... join it for the
+  // settled share.
+  std::vector<KindRun> beds;
+  for (unsigned seed = 3; beds.size() < static_cast<std::size_t>(tol::contact_kind_settled_seeds); ++seed) {
+    const auto box = polyhedron_packing(shape.table, 0, static_cast<int>(tol::contact_kind_box_cubes), seed, mat.dt);
+    FigureData quiet;  // only the first bed's steps go to the figure
+    beds.push_back(run_scene(beds.empty() ? name_a : name_a + ", seed " + std::to_string(seed), shape, cube, mat.law, box, box_duration, true,
+                             beds.empty() ? fig : quiet));
+  }
+  const KindRun& a = beds.front();
   const auto drum_rest = drum_scene(shape.table, radius, layers, {0, 0, 0}, 4, mat.dt);
   const KindRun b = run_scene(name_b, shape, cube, mat.law, drum_rest, drum_duration, fig.enabled(), fig);
   const auto drum_moving = drum_scene(shape.table, radius, layers, {1, 0, 0}, 4, mat.dt);
@@ -533,7 +552,7 @@ BOOST_AUTO_TEST_CASE(fig_3_27_edge_edge_fraction) {
   }
 
   check_fractions(name_a, a, p_random, "-", "-", box_duration);
-  check_settled_share(name_a, a, box_duration, fig);
+  check_settled_share(name_a, beds, box_duration, fig);
   check_fractions(name_b, b, p_random, "slightly > (a)", "-", drum_duration);
   check_fractions(name_c, c, p_random, "up to 30%", "falls to (a)'s", drum_duration);
 }

@@ -275,9 +275,14 @@ constexpr double contact_kind_box_duration = 0.6;
 constexpr double contact_kind_settled_window = 0.25;
 constexpr double contact_kind_settled_kinetic = 5e-3;
 // Issue 4's bound on the settled packing's edge-edge share by the thesis's rule (thesis Fig 3.27a:
-// at most 10%); measured 0.097-0.129 over 5 seeds (one sample's binomial sigma at ~340 contacts
-// is 0.018, the phase pools 67 correlated samples), 0.27 at 0.2 s.
+// at most 10%); one bed's settled share measured 0.097-0.129 over 5 seeds and 0.137 and 0.151
+// for seed 3 under two roundings of the orientation step (one sample's binomial sigma at ~340
+// contacts is 0.018, a phase pools 67 correlated samples), 0.27 at 0.2 s.
 constexpr double contact_kind_settled_share = 0.15;
+// The packing is chaotic (a last-bit change gives another trajectory), so the settled share is
+// pooled over this many beds, seeds 3, 4, ...: with a bed-to-bed spread of ~0.017 the pool's
+// share stays within ~0.01 of its mean (~0.125), 2.5 of its sigmas under the bound.
+constexpr long contact_kind_settled_seeds = 4;
 constexpr double contact_kind_scene_stiffness = 1e4;
 // The thesis's rule is evaluated on the host every this many steps (~5 ms per state).
 constexpr long contact_kind_thesis_rule_every = 50;

@@ -11,8 +11,10 @@ namespace blaze {
 // the registers at 65536 / (256 x 4) = 64 per thread. The polyhedron contact kernels ask for 4:
 // uncapped they took 128 registers and ran at 25% occupancy; on the H200 at 1e6 bodies the cap
 // took packed cubes from 2.3e7 to 3.8e7 particle-steps/s, packed dodecahedra 6.0e7 -> 8.1e7,
-// falling cubes 2.5e8 -> 4.5e8. The sphere kernels do not: with the cap the frictionless,
-// non-rotating bed at 1e7 lost 12% (6.99e9 -> 6.18e9).
+// falling cubes 2.5e8 -> 4.5e8. The other kernels get no __launch_bounds__ at all: declaring
+// (256, 1) is not the same as declaring nothing. The bisection of stop 14 (H200, 1e7
+// frictionless non-rotating bed) found the lean contact kernel at 0.97 ms per step without the
+// attribute and 1.17 ms with (256, 1) or (256, 4): the feature-skip ratio fell from 1.56x to 1.42x.
 template <class F, class = void>
 struct MinBlocks {
   static constexpr int value = 1;
@@ -34,7 +36,12 @@ void for_each(Host, Index n, const F& f) {
 #if BLAZE_DEVICE_CODE
 constexpr int kBlockSize = 256;
 template <class F>
-__global__ void __launch_bounds__(kBlockSize, min_blocks_v<F>) for_each_kernel(Index n, F f) {
+__global__ void for_each_kernel(Index n, F f) {
+  const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < n) f(i);
+}
+template <class F>
+__global__ void __launch_bounds__(kBlockSize, min_blocks_v<F>) for_each_bounded_kernel(Index n, F f) {
   const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i < n) f(i);
 }
@@ -43,7 +50,11 @@ template <class F>
 void for_each(Cuda, Index n, const F& f) {
   static_assert(std::is_trivially_copyable_v<F>, "kernel functors are passed by value to the GPU");
   if (n <= 0) return;
-  for_each_kernel<<<(n + kBlockSize - 1) / kBlockSize, kBlockSize>>>(n, f);
+  const unsigned blocks = static_cast<unsigned>((n + kBlockSize - 1) / kBlockSize);
+  if constexpr (min_blocks_v<F> > 1)
+    for_each_bounded_kernel<<<blocks, kBlockSize>>>(n, f);
+  else
+    for_each_kernel<<<blocks, kBlockSize>>>(n, f);
   cuda_check(cudaGetLastError(), "kernel launch");
 }
 #endif
