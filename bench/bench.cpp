@@ -10,7 +10,8 @@
 // world-surface sweep (surfaces: the floor split into tiles). On request (--cases largest): the
 // largest runs, a dense sphere bed of --largest-spheres (default 5e8) and packed cubes of
 // 3.4e7 (the thesis's largest) and --largest-cubes (default 1e8).
-// Prints a table and writes bench/results/<device>-<date>[-TAG].csv. Options: --out DIR, --skin S
+// Prints a table and writes bench/results/<device>-<date>[-TAG].csv (rows already in that file
+// are kept, this run's added after them). Options: --out DIR, --skin S
 // (skin in radii, default 0.2), --min-n N, --max-n N, --tag TAG, --cases
 // spheres,polyhedra,packed,surfaces,skip,mill,largest (default all but largest).
 #include <algorithm>
@@ -19,6 +20,8 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <stdexcept>
 #include <string>
 #include <vector>
 #include "bench/cases.hpp"
@@ -44,14 +47,38 @@ struct Provenance {
   std::string device, commit, date;
 };
 
-// The whole table, rewritten after every block of cases: a run that fails or is stopped keeps
-// what it measured. Written to FILE.tmp, then renamed.
-void write_csv(const std::string& file, const std::vector<Row>& rows, const Provenance& at) {
+std::string csv_header() {
+  std::string h = "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,steps_per_s,"
+                  "neighbour_builds,neighbour_capacity,neighbours_per_particle,contacts_per_particle,edge_edge_fraction,"
+                  "bytes_per_particle";
+  for (const char* ph : kPhases) h += std::string(",ms_per_step_") + ph;
+  return h + ",scene,world_surfaces,ms_per_rebuild";
+}
+
+// The rows an earlier run wrote to FILE (same day, device and tag), kept ahead of this run's: a
+// second invocation adds to the file instead of replacing it. A file with another header is
+// not ours to extend: the run stops before measuring anything.
+std::vector<std::string> earlier_rows(const std::string& file) {
+  std::vector<std::string> lines;
+  std::ifstream in(file);
+  if (!in) return lines;
+  std::string line;
+  std::getline(in, line);
+  if (line != csv_header())
+    throw std::runtime_error(file + ", line 1: the header is not this bench's (" + std::to_string(std::size(kPhases)) +
+                             " phase columns expected); move the file or choose another --tag");
+  while (std::getline(in, line))
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+// The whole table (the earlier rows, then this run's), rewritten after every block of cases: a
+// run that fails or is stopped keeps what it measured. Written to FILE.tmp, then renamed.
+void write_csv(const std::string& file, const std::vector<std::string>& earlier, const std::vector<Row>& rows,
+               const Provenance& at) {
   std::ofstream csv(file + ".tmp");
-  csv << "device,commit,date,backend,skin_over_radius,N,shape,law,precision,steps,particle_steps_per_s,steps_per_s,"
-         "neighbour_builds,neighbour_capacity,neighbours_per_particle,contacts_per_particle,edge_edge_fraction,bytes_per_particle";
-  for (const char* ph : kPhases) csv << ",ms_per_step_" << ph;
-  csv << ",scene,world_surfaces,ms_per_rebuild\n";
+  csv << csv_header() << '\n';
+  for (const std::string& line : earlier) csv << line << '\n';
   for (const auto& r : rows) {
     csv << '"' << at.device << "\"," << at.commit << ',' << at.date << ',' << DefaultSpace::name << ',' << g_skin_fraction << ','
         << r.n << ',' << r.shape << ',' << r.law << ',' << r.precision << ',' << r.steps << ',' << r.rate << ','
@@ -61,6 +88,7 @@ void write_csv(const std::string& file, const std::vector<Row>& rows, const Prov
     csv << ',' << r.scene << ',' << r.surfaces << ',' << r.rebuild_ms << '\n';
   }
   csv.close();
+  if (!csv) throw std::runtime_error("cannot write " + file + ".tmp");
   std::filesystem::rename(file + ".tmp", file);
 }
 
@@ -93,6 +121,13 @@ int main(int argc, char** argv) {
   for (char& c : tag) c = c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const std::string file = out_dir + "/" + tag + "-" + date.substr(0, 10) + skin_tag() + tag_suffix + ".csv";
   const Provenance at{device, commit, date};
+  std::vector<std::string> earlier;
+  try {
+    earlier = earlier_rows(file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "blaze bench: %s\n", e.what());
+    return 2;
+  }
   std::vector<Row> rows;
   for (long n : sizes) {
     if (max_n > 0 && n > max_n) break;
@@ -129,7 +164,7 @@ int main(int argc, char** argv) {
                   rows.back().rate / rows[rows.size() - 2].rate);
     }
     print_rows(rows, first);
-    write_csv(file, rows, at);
+    write_csv(file, earlier, rows, at);
   }
   if (wanted("largest")) {  // few steps: a step of 5e8 spheres takes about 0.1 s
     const std::size_t first = rows.size();
@@ -148,13 +183,13 @@ int main(int argc, char** argv) {
     rows.push_back(polyhedron_case("cube", PolyScene::packed, 34000000L, 5, 10));
     largest(largest_cubes, [](long n) { return polyhedron_case("cube", PolyScene::packed, n, 5, 10); });
     print_rows(rows, first);
-    write_csv(file, rows, at);
+    write_csv(file, earlier, rows, at);
   }
   if (wanted("mill")) {
     rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000));
     print_rows(rows, rows.size() - 1);
   }
-  write_csv(file, rows, at);
+  write_csv(file, earlier, rows, at);
   std::printf("\n%-9s %-12s %-6s %-6s %11s", "N", "shape", "law", "prec", "p-steps/s");
   for (const char* ph : kPhases) std::printf(" %10.10s", ph);
   std::printf(" %10s   (ms/step, phases timed by events; broad phase per rebuild)\n", "rebuild");
