@@ -12,7 +12,8 @@
 // 3.4e7 (the thesis's largest) and --largest-cubes (default 1e8).
 // Prints a table and writes bench/results/<device>-<date>[-TAG].csv (rows already in that file
 // are kept, this run's added after them). Options: --out DIR, --skin S
-// (skin in radii, default 0.2), --min-n N, --max-n N, --tag TAG, --cases
+// (skin in radii, default 0.2), --pairs auto|both_sides|once (SimulationParams::pairs; auto:
+// polyhedra once, spheres from both sides), --min-n N, --max-n N, --tag TAG, --cases
 // spheres,polyhedra,packed,surfaces,skip,mill,largest (default all but largest).
 #include <algorithm>
 #include <cctype>
@@ -52,7 +53,7 @@ std::string csv_header() {
                   "neighbour_builds,neighbour_capacity,neighbours_per_particle,contacts_per_particle,edge_edge_fraction,"
                   "bytes_per_particle";
   for (const char* ph : kPhases) h += std::string(",ms_per_step_") + ph;
-  return h + ",scene,world_surfaces,ms_per_rebuild";
+  return h + ",scene,world_surfaces,ms_per_rebuild,pairs";
 }
 
 // The rows an earlier run wrote to FILE (same day, device and tag), kept ahead of this run's: a
@@ -85,7 +86,7 @@ void write_csv(const std::string& file, const std::vector<std::string>& earlier,
         << r.steps_per_s() << ',' << r.builds << ',' << r.capacity << ',' << r.neighbours << ',' << r.contacts << ','
         << r.edge_fraction << ',' << r.bytes_per_particle;
     for (double ms : r.phase_ms) csv << ',' << ms;
-    csv << ',' << r.scene << ',' << r.surfaces << ',' << r.rebuild_ms << '\n';
+    csv << ',' << r.scene << ',' << r.surfaces << ',' << r.rebuild_ms << ',' << r.pairs << '\n';
   }
   csv.close();
   if (!csv) throw std::runtime_error("cannot write " + file + ".tmp");
@@ -103,6 +104,14 @@ int main(int argc, char** argv) {
     const std::string opt = argv[a];
     if (opt == "--out") out_dir = argv[a + 1];
     if (opt == "--tag") tag_suffix = std::string("-") + argv[a + 1];
+    if (opt == "--pairs") {
+      const std::string v = argv[a + 1];
+      if (v != "auto" && v != "both_sides" && v != "once") {
+        std::fprintf(stderr, "blaze bench: --pairs %s: allowed are auto (the default), both_sides and once\n", v.c_str());
+        return 2;
+      }
+      g_pairs = v == "auto" ? BenchPairs::automatic : v == "once" ? BenchPairs::once : BenchPairs::both_sides;
+    }
     if (opt == "--largest-spheres") largest_spheres = std::stol(argv[a + 1]);
     if (opt == "--largest-cubes") largest_cubes = std::stol(argv[a + 1]);
     if (opt == "--skin") g_skin_fraction = std::stod(argv[a + 1]);
@@ -180,8 +189,8 @@ int main(int argc, char** argv) {
     largest(largest_spheres, [](long n) {
       return sphere_case<ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>>("linear", n, 10, 20);
     });
-    rows.push_back(polyhedron_case("cube", PolyScene::packed, 34000000L, 5, 10));
-    largest(largest_cubes, [](long n) { return polyhedron_case("cube", PolyScene::packed, n, 5, 10); });
+    rows.push_back(polyhedron_case("cube", PolyScene::packed, 34000000L, 5, 10, 1, true));
+    largest(largest_cubes, [](long n) { return polyhedron_case("cube", PolyScene::packed, n, 5, 10, 1, true); });
     print_rows(rows, first);
     write_csv(file, earlier, rows, at);
   }

@@ -32,6 +32,7 @@ struct Row {
   std::vector<double> phase_ms;         // per step
   int surfaces = 0;                     // world surfaces (planar polygons + cylinders)
   double rebuild_ms = 0;                // one broad-phase rebuild: hash + sort + reorder + cells and list
+  std::string pairs;                    // both_sides or once (SimulationParams::pairs)
 };
 
 template <class Law>
@@ -56,11 +57,22 @@ inline ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
 
 inline double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
 
+// How the cases evaluate their pairs (--pairs auto|both_sides|once; SimulationParams::pairs).
+// auto, as `blaze run`: polyhedra once, spheres from both sides.
+enum class BenchPairs { automatic, both_sides, once };
+inline BenchPairs g_pairs = BenchPairs::automatic;
+inline PairEvaluation pairs_for(bool polyhedra) {
+  const bool once = g_pairs == BenchPairs::automatic ? polyhedra : g_pairs == BenchPairs::once;
+  return once ? PairEvaluation::once : PairEvaluation::both_sides;
+}
+
+// The output file's suffix for options off their defaults.
 inline std::string skin_tag() {
-  if (g_skin_fraction == 0.2) return "";
+  std::string tag = g_pairs == BenchPairs::automatic ? "" : g_pairs == BenchPairs::once ? "-pairs-once" : "-pairs-both";
+  if (g_skin_fraction == 0.2) return tag;
   char buf[32];
   std::snprintf(buf, sizeof buf, "-skin%g", g_skin_fraction);
-  return buf;
+  return buf + tag;
 }
 
 // Warm-up, then the timed stretch, then the fenced stretch for the phase split, then three
@@ -78,8 +90,9 @@ Row measure(Sim& sim, const char* shape, const char* law_name, const char* preci
   Row row{shape, law_name, precision, scene, sim.size(), steps,
           static_cast<double>(sim.size()) * static_cast<double>(steps) / seconds,
           static_cast<double>(sim.memory_bytes()) / static_cast<double>(sim.size()), sim.neighbour_builds() - builds0,
-          sim.neighbour_capacity(), 0, 0, 0, {}, surfaces, 0};
+          sim.neighbour_capacity(), 0, 0, 0, {}, surfaces, 0, ""};
   row.neighbours = sim.mean_neighbours();
+  row.pairs = sim.params().pairs == PairEvaluation::once ? "once" : "both_sides";
   sim.timer().enabled = true;
   sim.timer().reset();
   const long phase_steps = std::max(10L, steps / 4);
@@ -112,6 +125,7 @@ Row sphere_case(const char* law_name, long n, long warmup, long steps) {
   // 0-2% of a radius, held by six walls.
   auto scene = gravity_packing<Real>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
   scene.params.skin = static_cast<Real>(g_skin_fraction * kRadius);
+  scene.params.pairs = pairs_for(false);
   PairTable<Law> laws;
   laws.set(0, 0, make_law<Law>());
   laws.set(0, 1, make_law<Law>());
@@ -133,6 +147,7 @@ Row skip_case(const char* label, long n, long warmup, long steps) {
   scene.world = {};
   scene.params.gravity = {0, 0, 0};
   scene.params.skin = static_cast<float>(g_skin_fraction * kRadius);
+  scene.params.pairs = pairs_for(false);
   Law law = make_law<Law>();
   if constexpr (std::is_same_v<decltype(law.tangential), HistoryFreeFriction<float>>) law.tangential.mu = 0;
   PairTable<Law> laws;
@@ -169,7 +184,7 @@ inline Row mill_case(long warmup, long steps) {
   world.polygons.push_back(PlanarPolygon<float>::make(front, 1, 0u));
   world.polygons.push_back(PlanarPolygon<float>::make(back, 1, 0u));
   const SimulationParams<float> params{float(dt), {0, -9.81f, 0}, {-0.5f, -0.5f, -0.05f}, {0.5f, 0.5f, 0.2f},
-                                       float(g_skin_fraction * r)};
+                                       float(g_skin_fraction * r), 0, pairs_for(false)};
   const Law law{LinearSpringDashpot<float>::from_restitution(2e6, 0.825), HistoryFreeFriction<float>::make(0.15, 100)};
   PairTable<Law> laws;
   laws.set(0, 0, law);
@@ -203,7 +218,10 @@ enum class PolyScene { free_fall, packed };
 // free_fall: random orientations falling from a loose lattice in a box (thesis section 3.4.1's
 // benchmark); packed: packed_polyhedra, every body pressed on its six axial neighbours.
 // floor_tiles > 1: the floor as floor_tiles^2 polygons (world-surface scaling).
-inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, int floor_tiles = 1) {
+// fit_memory: pairs from both sides whatever --pairs says (the largest runs: pair slots would
+// take ~1 KB per cube).
+inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, int floor_tiles = 1,
+                           bool fit_memory = false) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   PolyhedronShape<float> shape;
   const ConvexShape convex = load_shape(std::string("data/shapes/") + shape_name + ".shape");
@@ -213,6 +231,7 @@ inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long 
                                          : polyhedron_packing(shape.table, 0, static_cast<int>(n), 42, dt);
   if (floor_tiles > 1) tile_floor(scene.world, floor_tiles);
   scene.params.skin = static_cast<float>(g_skin_fraction * shape.table.type[0].bounding_radius);
+  scene.params.pairs = fit_memory ? PairEvaluation::both_sides : pairs_for(true);
   const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
   PairTable<Law> laws;
   laws.set(0, 0, law);

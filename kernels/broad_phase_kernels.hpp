@@ -11,16 +11,22 @@ inline constexpr std::uint32_t kEmptyCell = 0xffffffffu;
 
 // Neighbour list: entry k of particle i at index[k * stride + i] (consecutive threads read
 // consecutive addresses). count[i] may exceed capacity: the list then overflowed and is rebuilt
-// with more room.
+// with more room. The list is symmetric (j lists i when i lists j: the same rounding both ways).
+// With pairs evaluated once (pair_forces.hpp) it also has a reverse index: for an entry (k, i)
+// whose j is below i, the position of i in j's list (other entries: unused; null otherwise).
 struct NeighbourView {
   Index* index;
   Index* count;
   Index stride;
   Index capacity;
+  Index* reverse = nullptr;
   // Entry k of particle i; the offset is taken in 64 bits (capacity x N passes 2^31 above ~1e8
   // particles).
   BLAZE_HD Index& at(Index k, Index i) const {
     return index[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
+  }
+  BLAZE_HD Index& reverse_at(Index k, Index i) const {
+    return reverse[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
   }
 };
 
@@ -93,6 +99,23 @@ struct BuildNeighbours {
       }
     }
     list.count[i] = count;
+  }
+};
+
+// The reverse index of entries (k, i) with j < i: the k' with list.at(k', j) == i (a short search
+// of j's list, at each build).
+struct BuildReverse {
+  NeighbourView list;
+  BLAZE_HD void operator()(Index i) const {
+    const Index count = min_r(list.count[i], list.capacity);
+    for (Index k = 0; k < count; ++k) {
+      const Index j = list.at(k, i);
+      if (j > i) continue;
+      const Index count_j = min_r(list.count[j], list.capacity);
+      Index m = 0;
+      while (m < count_j && list.at(m, j) != i) ++m;
+      list.reverse_at(k, i) = m;  // m < count_j: the list is symmetric
+    }
   }
 };
 

@@ -325,7 +325,7 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
-                                        "domain_lo", "domain_hi", "skin", "force_dt", "max_impact_speed", "seed"});
+                                        "domain_lo", "domain_hi", "skin", "pair_evaluation", "force_dt", "max_impact_speed", "seed"});
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
   s.precision = static_cast<PrecisionKind>(f.choice("precision", {"float", "double"}, 1));
   s.backend = static_cast<BackendKind>(f.choice("backend", {"auto", "cpu", "gpu"}, 0));
@@ -344,6 +344,7 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   if (!(s.domain_hi.x > s.domain_lo.x && s.domain_hi.y > s.domain_lo.y && s.domain_hi.z > s.domain_lo.z))
     f.fail(*f.get("domain_hi"), "domain_hi", "must exceed domain_lo in x, y and z");
   s.skin = f.number_or("skin", 0.2, {0, 10, false, false, "x largest bounding radius"});
+  s.pair_evaluation = static_cast<PairsKind>(f.choice("pair_evaluation", {"auto", "both_sides", "once"}, 0));
   s.force_dt = f.boolean_or("force_dt", false);
   s.max_impact_speed = f.number_or("max_impact_speed", 0, non_negative("m/s"));
   s.seed = static_cast<std::uint64_t>(f.integer_or("seed", 1, 0, std::numeric_limits<long>::max()));

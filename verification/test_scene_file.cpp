@@ -122,6 +122,8 @@ const BadValue kBadValues[] = {
     {"density = 2500", "density = -2500", "key 'density' = -2500", "must be > 0 kg/m^3"},
     {"density = 2500", "densty = 2500", "unknown key 'densty'", "allowed: name, density, youngs_modulus"},
     {"law =", "law = \"hooke\"", "key 'law' = \"hooke\"", "one of \"linear\" \"hertz\""},
+    {"law =", "pair_evaluation = \"half\"\nlaw = \"linear\"", "key 'pair_evaluation' = \"half\"",
+     "one of \"auto\" \"both_sides\" \"once\""},
     {"friction =", "friction = -0.1", "key 'friction' = -0.1", "in [0, 100]"},
     {"material = \"glass\"", "material = \"glas\"", "key 'material' = \"glas\"", "the name of a [[material]]: \"glass\" \"steel\""},
     {"count = [3, 2, 2]", "count = [3, 2.5, 2]", "key 'count' = [3, 2.5, 2]", "[nx, ny, nz], integers >= 1"},

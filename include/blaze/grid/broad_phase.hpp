@@ -101,14 +101,17 @@ class BroadPhase {
   // Device memory held by the broad phase (grid cells, sort buffers, neighbour list), bytes.
   std::size_t bytes() const {
     std::size_t b = (keys_.size() + cell_start_.size() + cell_end_.size()) * sizeof(std::uint32_t);
-    b += (order_.size() + list_.size() + count_.size()) * sizeof(Index);
+    b += (order_.size() + list_.size() + count_.size() + reverse_.size()) * sizeof(Index);
     for (const auto& c : reference_) b += c.size() * sizeof(Real);
     return b;
   }
 
   NeighbourView neighbours() {
-    return {list_.data(), count_.data(), stride_, capacity_};
+    return {list_.data(), count_.data(), stride_, capacity_, with_reverse_ ? reverse_.data() : nullptr};
   }
+
+  // Keep the list's reverse index from the next build on (pairs evaluated once).
+  void keep_reverse_index() { with_reverse_ = true; }
 
  private:
   static Vec3Field<Real> field(Buffer<Real, Space> (&f)[3]) { return {f[0].data(), f[1].data(), f[2].data()}; }
@@ -126,6 +129,10 @@ class BroadPhase {
       if (most <= capacity_) break;
       capacity_ = most + most / 4 + 1;  // grow with headroom, rebuild
     }
+    if (with_reverse_) {
+      reverse_.resize(std::max<std::size_t>(reverse_.size(), list_.size()));
+      for_each(Space{}, p.n, BuildReverse{neighbours()});
+    }
     for (auto& c : reference_) c.resize(std::max<std::size_t>(c.size(), p.n));
     for_each(Space{}, p.n, CopyVec3<Real>{p.position, field(reference_)});
     ++builds_;
@@ -137,7 +144,8 @@ class BroadPhase {
   Buffer<std::uint32_t, Space> keys_;
   Buffer<Index, Space> order_;
   Buffer<std::uint32_t, Space> cell_start_, cell_end_;
-  Buffer<Index, Space> list_, count_;
+  Buffer<Index, Space> list_, count_, reverse_;
+  bool with_reverse_ = false;
   Buffer<Real, Space> reference_[3];
   Index stride_ = 0;
   Index capacity_ = 16;

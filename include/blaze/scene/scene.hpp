@@ -21,6 +21,8 @@ struct SceneError : std::runtime_error {
 enum class LawKind { linear, hertz };
 enum class PrecisionKind { float32, float64 };
 enum class BackendKind { automatic, cpu, gpu };
+// Particle-particle pairs evaluated from both sides or once (SimulationParams::pairs).
+enum class PairsKind { automatic, both_sides, once };
 
 inline const char* to_string(LawKind k) { return k == LawKind::linear ? "linear" : "hertz"; }
 inline const char* to_string(PrecisionKind p) { return p == PrecisionKind::float32 ? "float" : "double"; }
@@ -125,6 +127,7 @@ struct Scene {
   double drag = 0;               // kg/m
   Vec3<double> domain_lo, domain_hi;  // m
   double skin = 0.2;             // neighbour-list skin / largest bounding radius
+  PairsKind pair_evaluation = PairsKind::automatic;  // auto: once for polyhedra, both sides for spheres
   bool force_dt = false;         // run even when dt exceeds the safe fraction of the critical step
   double max_impact_speed = 0;   // m/s, Hertz stiffness estimate (0: from the scene)
   std::uint64_t seed = 1;

@@ -15,10 +15,21 @@
 #include "blaze/sim/features.hpp"
 #include "blaze/world/world.hpp"
 #include "kernels/contact_forces.hpp"
+#include "kernels/pair_forces.hpp"
 #include "kernels/integrate.hpp"
 #include "kernels/world_forces.hpp"
 
 namespace blaze {
+
+// How particle-particle contacts are evaluated (the results are bitwise the same):
+//   both_sides: one kernel; each particle walks its list and evaluates every pair itself
+//               (contact_forces.hpp): no storage beyond the list;
+//   once:       each pair evaluated once into a slot per list entry, then gathered per particle
+//               (pair_forces.hpp): half the collisions and law evaluations, 29 B (float) or
+//               53 B (double) more per list entry. Small systems then take one launch per
+//               phase, not the fused batches of fused_steps.hpp. A scene's choice: it pays
+//               for polyhedra, whose pairs are dear, not for spheres (bench/README.md).
+enum class PairEvaluation { both_sides, once };
 
 template <class Real>
 struct SimulationParams {
@@ -28,6 +39,7 @@ struct SimulationParams {
   Vec3<Real> domain_hi; // m
   Real skin;            // m, neighbour-list margin; 0 rebuilds whenever anything moves
   Real drag = 0;        // kg/m, quadratic air drag F = -drag |v| v on every particle (0: none)
+  PairEvaluation pairs = PairEvaluation::both_sides;  // see PairEvaluation
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
@@ -72,6 +84,7 @@ class Simulation {
     check_finite(particles, 0);
     world_.upload(world);
     initial_count_ = store_.size();
+    if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     refresh_neighbours(0);
     compute_forces();
     for_each(Space{}, store_.size(), integrate<Stage::prime>());
@@ -94,6 +107,7 @@ class Simulation {
     removed_count_ = snap.removed_count;
     removed_mass_ = snap.removed_mass;
     removed_energy_ = snap.removed_energy;
+    if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     refresh_neighbours(steps_);
   }
 
@@ -138,7 +152,9 @@ class Simulation {
   // Steps of small systems run as one launch per batch (fused_steps.hpp), unless the phase timer
   // is on (the phases are then timed one by one). Larger systems take one launch per phase and
   // one host round trip per step (the rebuild check), a small share of their step.
-  bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
+  bool fused() const {
+    return store_.size() <= kFusedMaxParticles && !timer_.enabled && params_.pairs == PairEvaluation::both_sides;
+  }
 
   ParticleState<Real> state() const {
     ParticleState<Real> s = store_.download();
@@ -209,8 +225,12 @@ class Simulation {
     for (Index c : count) total += c;
     return count.empty() ? 0 : total / static_cast<double>(count.size());
   }
-  // Particle arrays plus broad phase (not counting the sorter's scratch), bytes.
-  std::size_t memory_bytes() const { return store_.bytes() + broad_.bytes(); }
+  // Particle arrays, broad phase (not counting the sorter's scratch) and pair slots, bytes.
+  std::size_t memory_bytes() const {
+    std::size_t slots = slot_state_.size() + slot_overlap_.size() * sizeof(Real);
+    for (const auto& b : slot_reals_) slots += b.size() * sizeof(Real);
+    return store_.bytes() + broad_.bytes() + slots;
+  }
 
  private:
   static Real max_of(const std::vector<Real>& v) {
@@ -340,10 +360,38 @@ class Simulation {
   }
   WorldForces<Shape, Law, Kinematics, Features> world_forces() { return {shape_, store_.view(), world_.view(), laws_}; }
 
+  // Pairs once: the slots, one per list entry (grown with the list, never shrunk).
+  PairSlots<Real> pair_slots() {
+    const NeighbourView nl = broad_.neighbours();
+    const std::size_t entries = static_cast<std::size_t>(nl.capacity) * static_cast<std::size_t>(nl.stride);
+    for (int b = 0; b < (Features::rotation ? 6 : 3); ++b)  // contact points only with rotation
+      slot_reals_[b].resize(std::max(slot_reals_[b].size(), entries));
+    slot_state_.resize(std::max(slot_state_.size(), entries));
+    if constexpr (Features::monitor) slot_overlap_.resize(std::max(slot_overlap_.size(), entries));
+    PairSlots<Real> s{};
+    for (int d = 0; d < 3; ++d) {
+      s.force[d] = slot_reals_[d].data();
+      s.point[d] = slot_reals_[3 + d].data();
+    }
+    s.state = slot_state_.data();
+    s.overlap = Features::monitor ? slot_overlap_.data() : nullptr;
+    return s;
+  }
+
   void compute_forces() {
     prepare_statistics();
     const Index n = store_.size();
-    timer_.time("contacts", [&] { for_each(Space{}, n, contact_forces()); });
+    if (params_.pairs == PairEvaluation::once) {
+      const PairSlots<Real> slots = pair_slots();
+      ContactStats stats{nullptr, nullptr};
+      if constexpr (Features::statistics) stats = {stats_vertex_face_.data(), stats_edge_edge_.data()};
+      timer_.time("contacts", [&] {
+        for_each(Space{}, n, PairForces<Shape, Law, Kinematics, Features>{shape_, store_.view(), broad_.neighbours(), laws_, slots});
+        for_each(Space{}, n, GatherPairForces<Real, Features>{store_.view(), broad_.neighbours(), slots, stats});
+      });
+    } else {
+      timer_.time("contacts", [&] { for_each(Space{}, n, contact_forces()); });
+    }
     if (!world_.empty()) timer_.time("walls", [&] { for_each(Space{}, n, world_forces()); });
   }
 
@@ -351,6 +399,9 @@ class Simulation {
   SimulationParams<Real> params_;
   PairTable<Law> laws_;
   Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
+  Buffer<Real, Space> slot_reals_[6];  // pairs once: force and contact point (x, y, z each)
+  Buffer<std::uint8_t, Space> slot_state_;
+  Buffer<Real, Space> slot_overlap_;
   ParticleStore<Real, Space> store_;
   WorldStore<Real, Space> world_;
   BroadPhase<Real, Space> broad_;
