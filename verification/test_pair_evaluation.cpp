@@ -1,11 +1,19 @@
-// Each pair once (PairEvaluation::once, kernels/pair_forces.hpp) gives bitwise the trajectory of
-// each pair from both sides (kernels/contact_forces.hpp): the second side's force is the exact
-// negation of the first's, its torque the same expression, and both add in list order. Checked
-// on a falling sphere bed (friction, rotation, walls, rebuilds and re-sorting) and a falling bed
-// of cubes, with the contact counts by kind and the penetration monitor that `blaze run` keeps.
+// Each pair once (PairEvaluation::once, kernels/pair_forces.hpp) against each pair from both sides
+// (kernels/contact_forces.hpp), on a falling sphere bed (friction, rotation, walls, rebuilds and
+// re-sorting) and a falling bed of cubes, with the contact counts by kind and the penetration
+// monitor that `blaze run` keeps:
+// - one force evaluation from the same state agrees to rounding on every backend;
+// - on the host the whole trajectory is bitwise the same: the second side's force is the exact
+//   negation of the first's, its torque the same expression, and both add in list order. On the
+//   GPU the compiler contracts a*b + c into FMAs per kernel, and the pair and gather kernels
+//   contract differently from the one-kernel path (measured on the H200: 976 of 1000 spheres
+//   differ after 3000 chaotic steps), so there the trajectories are not compared.
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <cstring>
+#include <type_traits>
 #include "verification/scenes.hpp"
+#include "blaze/scenes/gravity_packing.hpp"
 #include "blaze/scenes/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 
@@ -55,6 +63,51 @@ long differing_particles(const ParticleState<double>& a, const ParticleState<dou
   return n;
 }
 
+// Largest difference of a per-particle vector between two snapshots (matched by id), and the
+// largest magnitude in the first: force (fields 9-11 of the store's reals) or torque (12-14).
+template <class Snapshot>
+std::pair<double, double> field_difference(const Snapshot& a, const Snapshot& b, std::size_t first_field) {
+  std::vector<std::size_t> at(b.id.size());
+  for (std::size_t k = 0; k < b.id.size(); ++k) at[static_cast<std::size_t>(b.id[k])] = k;
+  double diff = 0, scale = 0;
+  for (std::size_t k = 0; k < a.id.size(); ++k) {
+    const std::size_t m = at[static_cast<std::size_t>(a.id[k])];
+    double d2 = 0, s2 = 0;
+    for (std::size_t c = first_field; c < first_field + 3; ++c) {
+      const double x = a.reals[c][k], y = b.reals[c][m];
+      d2 += (x - y) * (x - y), s2 += x * x;
+    }
+    diff = std::max(diff, std::sqrt(d2)), scale = std::max(scale, std::sqrt(s2));
+  }
+  return {diff, scale};
+}
+
+// From one packed state (every body pressed on its neighbours), one step in each mode: the forces
+// and torques it evaluated agree to rounding.
+template <class Sim, class Scene, class Laws, class Shape>
+void check_one_evaluation(const std::string& name, const Scene& scene, const Laws& laws, const Shape& shape, double tolerance) {
+  auto params = scene.params;
+  const auto snap = Sim(params, laws, scene.world, scene.particles, shape).snapshot();
+  long contacts = 0;
+  const auto evaluate = [&](PairEvaluation pairs) {
+    params.pairs = pairs;
+    Sim sim(params, laws, scene.world, snap, shape);
+    sim.step();
+    const auto c = sim.contact_counts();
+    contacts = c.first + c.second;
+    return sim.snapshot().store;
+  };
+  const auto both = evaluate(PairEvaluation::both_sides);
+  const auto once = evaluate(PairEvaluation::once);
+  const auto [df, sf] = field_difference(both, once, 9);
+  const auto [dt, st] = field_difference(both, once, 12);
+  BOOST_TEST_MESSAGE(name << ", one evaluation from the same state: " << contacts << " contacts; largest force difference "
+                          << df << " N of the largest force " << sf << " N, torque " << dt << " of " << st << " N m");
+  BOOST_TEST(contacts >= 2 * static_cast<long>(both.id.size()));
+  BOOST_TEST(df <= tolerance * sf);
+  BOOST_TEST(dt <= tolerance * st);
+}
+
 template <class Sim, class Scene, class Laws, class Shape>
 void check_once_equals_both_sides(const std::string& name, const Scene& scene, const Laws& laws, const Shape& shape, int steps) {
   const Outcome both = run<Sim>(scene, laws, shape, PairEvaluation::both_sides, steps);
@@ -83,7 +136,11 @@ BOOST_AUTO_TEST_CASE(spheres_once_equal_both_sides) {
   const auto scene = gravity_packing<double>(1000, r, 2024, kPi * std::sqrt(0.5 * m / k) / 25);
   const Law law{LinearSpringDashpot<double>::from_restitution(k, 0.5), HistoryFreeFriction<double>::make(0.4, 0.05)};
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
-  check_once_equals_both_sides<Sim>("spheres, double", scene, one_law(law), SphereShape{}, 3000);
+  const auto packed = gravity_packing<double>(2000, r, 42, kPi * std::sqrt(0.5 * m / k) / 25, {Lattice::fcc, 1.98, 0.005, 0.01, true});
+  check_one_evaluation<Sim>("spheres, double, fcc bed at 0.99 of the contact spacing", packed, one_law(law), SphereShape{},
+                            tol::pair_evaluation_double);
+  if constexpr (std::is_same_v<DefaultSpace, Host>)
+    check_once_equals_both_sides<Sim>("spheres, double", scene, one_law(law), SphereShape{}, 3000);
 }
 
 BOOST_AUTO_TEST_CASE(cubes_once_equal_both_sides) {
@@ -94,7 +151,10 @@ BOOST_AUTO_TEST_CASE(cubes_once_equal_both_sides) {
   const auto scene = polyhedron_packing(shape.table, 0, 64, 5, dt);
   const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
   using Sim = Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
-  check_once_equals_both_sides<Sim>("cubes, float", scene, one_law(law), shape, 3000);
+  const auto packed = packed_polyhedra(shape.table, 0, 512, 42, dt, drawn_orientation(load_shape("data/shapes/cube.shape")));
+  check_one_evaluation<Sim>("cubes, float, packed lattice", packed, one_law(law), shape, tol::pair_evaluation_float);
+  if constexpr (std::is_same_v<DefaultSpace, Host>)
+    check_once_equals_both_sides<Sim>("cubes, float", scene, one_law(law), shape, 3000);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -296,6 +296,14 @@ constexpr double contact_kind_band = 0.10;
 constexpr double contact_kind_sigmas = 4;
 // (end of section D)
 
+// --- pairs evaluated once (issue 6) ---
+// One force evaluation, pairs once against both sides, from the same state: on the host they are
+// bitwise equal; on the GPU the kernels contract a*b + c into FMAs differently, a few ulps of each
+// pair force, summed over a body's ~12 pairs whose forces exceed its net force several times.
+// 1e3 ulps of the largest net force; a missing, doubled or sign-flipped pair shows at O(1).
+constexpr double pair_evaluation_float = 1e3 * 1.2e-7;
+constexpr double pair_evaluation_double = 1e3 * 2.2e-16;
+
 // --- scene files (issue 5) ---
 // Contact time measured as the span of steps with overlap at dt = t_c/2000: each end is found to
 // within one step, so the span is within 2 dt = 1e-3 t_c; twice that for safety.
