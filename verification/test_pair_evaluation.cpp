@@ -54,7 +54,7 @@ Outcome run(const Scene& scene, const Laws& laws, const Shape& shape, PairEvalua
 }
 
 // Every component of every particle, compared as bits (so -0 and 0 differ, NaN equals NaN).
-long differing_particles(const ParticleState<double>& a, const ParticleState<double>& b) {
+[[maybe_unused]] long differing_particles(const ParticleState<double>& a, const ParticleState<double>& b) {
   auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof x) == 0; };
   long n = 0;
   for (std::size_t i = 0; i < a.size(); ++i)
