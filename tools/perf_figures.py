@@ -2,7 +2,7 @@
 """Data for the thesis's performance figures (make fig-2.14 ... fig-3.26): reads the benchmark CSVs
 (bench/results/*.csv from one device, default the newest GPU measurement of each case) and writes
 plots/perf/data/fig-X.dat, one block per series (first line: its title), for plots/perf/fig-X.gp.
-Linear law, float, skin 0.2 radii. Usage: tools/perf_figures.py [DEVICE_PREFIX]  (default "NVIDIA")."""
+Linear law, float, skin 0.2 radii, each pair from both sides. Usage: tools/perf_figures.py [DEVICE_PREFIX]  (default "NVIDIA")."""
 import csv
 import glob
 import os
@@ -22,6 +22,8 @@ def rows(prefix):
                     continue
                 if "@" in r["shape"] or float(r.get("skin_over_radius") or 0.2) != 0.2 or "scene" not in r:
                     continue
+                if (r.get("pairs") or "both_sides") != "both_sides":
+                    continue  # one mode for every N: the sweeps were measured with pairs from both sides
                 key = (r["shape"], r["scene"], int(float(r["N"])), int(r["world_surfaces"] or 0))
                 if key not in best or r["date"] > best[key]["date"]:
                     best[key] = dict(r, source=os.path.basename(path))
