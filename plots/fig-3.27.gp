@@ -1,7 +1,7 @@
 # test: contact_types/fig_3_27_edge_edge_fraction
 # Thesis Fig 3.27: share of edge-edge among particle-particle contacts (walls and drum not counted)
 # for 10 mm cubes at random initial orientations: (a) 216 in a box (polyhedron_packing, random
-# velocities up to 0.3 m/s), run until the bed has settled (1.2 s here, 0.6 s in the test), (b) ~220
+# velocities up to 0.3 m/s), run until the bed has settled (1.8 s here, 0.9 s in the test), (b) ~220
 # in a drum of radius 7 cm from rest, (c) the same drum with all cubes at 1 m/s towards the
 # right-hand wall (0.4 s each here, 0.2 s in the test). Linear spring 1e4 N/m, e = 0.3, mu = 0.4,
 # dt = t_c/25 = 4.4e-5 s. Two classifications of the same contacts: blue, per step, the kernel's

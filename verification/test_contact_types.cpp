@@ -30,8 +30,9 @@
 // The thesis also classifies differently: Type 1 as soon as a vertex of either body is inside the
 // other (Algorithm 1), edge-edge only otherwise; that is what its Fig 3.27 counts. The same
 // contacts classified by that rule (on the host) give the thesis's picture: first touches still
-// 54%, but the box's bed falls from ~45% while it collapses to ~23% at 0.2 s, ~13% once settled
-// (0.45-0.6 s) and ~9% by 1.2 s; the drums stay near 28% over 0.4 s (still filling in): most
+// 54%, but the box's bed falls from ~45% while it collapses to ~23% at 0.2 s, ~13% at 0.45-0.6 s
+// and ~12% (pooled over six beds) at 0.675-0.9 s, ~9% by 1.2 s; the drums stay near 28% over
+// 0.4 s (still filling in): most
 // separating-axis edge-edge contacts of a bed are nearly flat face contacts whose
 // least-penetration axis is an edge pair. The box therefore runs until its bed has settled and
 // the bound (below 15%) is asserted by the thesis's rule over the settled phase; the
