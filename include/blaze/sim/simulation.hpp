@@ -353,10 +353,12 @@ class Simulation {
       stats_edge_edge_.resize(std::max<std::size_t>(stats_edge_edge_.size(), store_.size()));
     }
   }
+  ContactStats contact_stats() {
+    if constexpr (Features::statistics) return {stats_vertex_face_.data(), stats_edge_edge_.data()};
+    return {nullptr, nullptr};
+  }
   ContactForces<Shape, Law, Kinematics, Features> contact_forces() {
-    ContactStats stats{nullptr, nullptr};
-    if constexpr (Features::statistics) stats = {stats_vertex_face_.data(), stats_edge_edge_.data()};
-    return {shape_, store_.view(), broad_.neighbours(), laws_, stats};
+    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats()};
   }
   WorldForces<Shape, Law, Kinematics, Features> world_forces() { return {shape_, store_.view(), world_.view(), laws_}; }
 
@@ -383,11 +385,9 @@ class Simulation {
     const Index n = store_.size();
     if (params_.pairs == PairEvaluation::once) {
       const PairSlots<Real> slots = pair_slots();
-      ContactStats stats{nullptr, nullptr};
-      if constexpr (Features::statistics) stats = {stats_vertex_face_.data(), stats_edge_edge_.data()};
       timer_.time("contacts", [&] {
         for_each(Space{}, n, PairForces<Shape, Law, Kinematics, Features>{shape_, store_.view(), broad_.neighbours(), laws_, slots});
-        for_each(Space{}, n, GatherPairForces<Real, Features>{store_.view(), broad_.neighbours(), slots, stats});
+        for_each(Space{}, n, GatherPairForces<Real, Features>{store_.view(), broad_.neighbours(), slots, contact_stats()});
       });
     } else {
       timer_.time("contacts", [&] { for_each(Space{}, n, contact_forces()); });
