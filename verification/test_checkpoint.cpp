@@ -12,10 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
-#include "blaze/contact/polyhedron.hpp"
 #include "blaze/io/checkpoint.hpp"
-#include "blaze/scenes/polyhedron_packing.hpp"
-#include "blaze/shapes/shape_io.hpp"
+#include "verification/cases/cube_bed.hpp"
 #include "verification/scenes.hpp"
 
 using namespace blaze;
@@ -94,16 +92,11 @@ BOOST_AUTO_TEST_CASE(sphere_restart_is_bitwise_velocity_verlet_double) { sphere_
 BOOST_AUTO_TEST_CASE(sphere_restart_is_bitwise_half_step_float) { sphere_restart<float, HalfStepVerlet>("half_float"); }
 
 BOOST_AUTO_TEST_CASE(polyhedron_restart_is_bitwise) {
-  using Law = LinearLaw<float>;
-  PolyhedronShape<float> shape;
-  shape.table.add(load_shape("data/shapes/cube.shape"), 2500);
-  const double k = 1e5, dt = kPi * std::sqrt(0.5 * shape.table.type[0].mass / k) / 25;
-  const auto scene = polyhedron_packing(shape.table, 0, 64, 5, dt);
-  const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
-  using Sim = Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet>;
-  const auto laws = one_law(law);
-  restart_is_bitwise<Sim, float>([&] { return Sim(scene.params, laws, scene.world, scene.particles, shape); }, scene.params,
-                                 laws, scene.world, 1500, 1500, "cubes");
+  const cases::CubeBed bed = cases::cube_bed();
+  using Sim = Simulation<DefaultSpace, PolyhedronShape<float>, LinearLaw<float>, VelocityVerlet>;
+  const auto laws = one_law(bed.law);
+  restart_is_bitwise<Sim, float>([&] { return Sim(bed.scene.params, laws, bed.scene.world, bed.scene.particles, bed.shape); },
+                                 bed.scene.params, laws, bed.scene.world, 1500, 1500, "cubes");
 }
 
 BOOST_AUTO_TEST_CASE(damaged_checkpoints_are_rejected_by_name) {

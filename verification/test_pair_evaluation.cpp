@@ -14,6 +14,7 @@
 #include <type_traits>
 #include "verification/scenes.hpp"
 #include "blaze/scenes/gravity_packing.hpp"
+#include "verification/cases/cube_bed.hpp"
 #include "blaze/scenes/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 
@@ -144,17 +145,13 @@ BOOST_AUTO_TEST_CASE(spheres_once_equal_both_sides) {
 }
 
 BOOST_AUTO_TEST_CASE(cubes_once_equal_both_sides) {
-  using Law = LinearLaw<float>;
-  PolyhedronShape<float> shape;
-  shape.table.add(load_shape("data/shapes/cube.shape"), 2500);
-  const double k = 1e5, dt = kPi * std::sqrt(0.5 * shape.table.type[0].mass / k) / 25;
-  const auto scene = polyhedron_packing(shape.table, 0, 64, 5, dt);
-  const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
-  using Sim = Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
-  const auto packed = packed_polyhedra(shape.table, 0, 512, 42, dt, drawn_orientation(load_shape("data/shapes/cube.shape")));
-  check_one_evaluation<Sim>("cubes, float, packed lattice", packed, one_law(law), shape, tol::pair_evaluation_float);
+  const cases::CubeBed bed = cases::cube_bed();
+  using Sim = Simulation<DefaultSpace, PolyhedronShape<float>, LinearLaw<float>, VelocityVerlet, ContactPointVelocity,
+                         MonitoredFeatures>;
+  const auto packed = packed_polyhedra(bed.shape.table, 0, 512, 42, bed.dt, drawn_orientation(load_shape("data/shapes/cube.shape")));
+  check_one_evaluation<Sim>("cubes, float, packed lattice", packed, one_law(bed.law), bed.shape, tol::pair_evaluation_float);
   if constexpr (std::is_same_v<DefaultSpace, Host>)
-    check_once_equals_both_sides<Sim>("cubes, float", scene, one_law(law), shape, 3000);
+    check_once_equals_both_sides<Sim>("cubes, float", bed.scene, one_law(bed.law), bed.shape, 3000);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
