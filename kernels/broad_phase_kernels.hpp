@@ -20,14 +20,12 @@ struct NeighbourView {
   Index stride;
   Index capacity;
   Index* reverse = nullptr;
-  // Entry k of particle i; the offset is taken in 64 bits (capacity x N passes 2^31 above ~1e8
-  // particles).
-  BLAZE_HD Index& at(Index k, Index i) const {
-    return index[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
+  // Where entry k of particle i lies, in 64 bits (capacity x N passes 2^31 above ~1e8 particles).
+  BLAZE_HD std::size_t offset(Index k, Index i) const {
+    return static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i);
   }
-  BLAZE_HD Index& reverse_at(Index k, Index i) const {
-    return reverse[static_cast<std::size_t>(k) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i)];
-  }
+  BLAZE_HD Index& at(Index k, Index i) const { return index[offset(k, i)]; }
+  BLAZE_HD Index& reverse_at(Index k, Index i) const { return reverse[offset(k, i)]; }
 };
 
 // Line 1: key = cell hash (eq. 2.1), or the outside key for particles that left the domain.
@@ -103,19 +101,23 @@ struct BuildNeighbours {
 };
 
 // The reverse index of entries (k, i) with j < i: the k' with list.at(k', j) == i (a short search
-// of j's list, at each build).
+// of j's list, at each build). Run as a reduction that also checks the list's symmetry, which
+// the pair kernels rely on: 1 if some j does not list i back (in either direction, a bug the
+// caller reports), else 0.
 struct BuildReverse {
   NeighbourView list;
-  BLAZE_HD void operator()(Index i) const {
+  BLAZE_HD int operator()(Index i) const {
+    int missing = 0;
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
-      if (j > i) continue;
       const Index count_j = min_r(list.count[j], list.capacity);
       Index m = 0;
       while (m < count_j && list.at(m, j) != i) ++m;
-      list.reverse_at(k, i) = m;  // m < count_j: the list is symmetric
+      if (j < i) list.reverse_at(k, i) = m;
+      missing |= m == count_j ? 1 : 0;
     }
+    return missing;
   }
 };
 

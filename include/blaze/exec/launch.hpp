@@ -7,17 +7,19 @@
 
 namespace blaze {
 
-// Blocks of 256 threads per SM that a functor's kernel must fit (its kMinBlocks, else 1): 4 caps
-// the registers at 65536 / (256 x 4) = 64 per thread. The polyhedron contact kernels ask for 4:
-// uncapped they took 128 registers and ran at 25% occupancy; on the H200 at 1e6 bodies the cap
-// took packed cubes from 2.3e7 to 3.8e7 particle-steps/s, packed dodecahedra 6.0e7 -> 8.1e7,
-// falling cubes 2.5e8 -> 4.5e8. The other kernels get no __launch_bounds__ at all: declaring
-// (256, 1) is not the same as declaring nothing. The bisection of stop 14 (H200, 1e7
-// frictionless non-rotating bed) found the lean contact kernel at 0.97 ms per step without the
-// attribute and 1.17 ms with (256, 1) or (256, 4): the feature-skip ratio fell from 1.56x to 1.42x.
+// Blocks of 256 threads per SM that a functor's kernel must fit: its kMinBlocks, declared as
+// __launch_bounds__(256, kMinBlocks); 0 (the default) declares nothing. 4 caps the registers at
+// 65536 / (256 x 4) = 64 per thread. The polyhedron contact kernels ask for 4: uncapped they took
+// 128 registers and ran at 25% occupancy; on the H200 at 1e6 bodies the cap took packed cubes
+// from 2.3e7 to 3.8e7 particle-steps/s, packed dodecahedra 6.0e7 -> 8.1e7, falling cubes
+// 2.5e8 -> 4.5e8. Declaring (256, 1) is not the same as declaring nothing: ptxas then allows
+// other register counts. The bisection of stop 14 (H200, 1e7 frictionless non-rotating bed)
+// found the lean sphere contact kernel at 0.97 ms per step without the attribute and 1.17 ms with
+// (256, 1) or (256, 4), while the sphere wall kernel ran at 0.22 ms with (256, 1) and 0.29 ms
+// without; so each kernel says what it wants (world_forces.hpp, contact_forces.hpp).
 template <class F, class = void>
 struct MinBlocks {
-  static constexpr int value = 1;
+  static constexpr int value = 0;
 };
 template <class F>
 struct MinBlocks<F, std::void_t<decltype(F::kMinBlocks)>> {
@@ -36,14 +38,17 @@ void for_each(Host, Index n, const F& f) {
 #if BLAZE_DEVICE_CODE
 constexpr int kBlockSize = 256;
 template <class F>
-__global__ void for_each_kernel(Index n, F f) {
+__device__ __forceinline__ void for_each_thread(Index n, const F& f) {
   const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i < n) f(i);
 }
 template <class F>
+__global__ void for_each_kernel(Index n, F f) {
+  for_each_thread(n, f);
+}
+template <class F>
 __global__ void __launch_bounds__(kBlockSize, min_blocks_v<F>) for_each_bounded_kernel(Index n, F f) {
-  const Index i = static_cast<Index>(blockIdx.x) * blockDim.x + threadIdx.x;
-  if (i < n) f(i);
+  for_each_thread(n, f);
 }
 
 template <class F>
@@ -51,7 +56,7 @@ void for_each(Cuda, Index n, const F& f) {
   static_assert(std::is_trivially_copyable_v<F>, "kernel functors are passed by value to the GPU");
   if (n <= 0) return;
   const unsigned blocks = static_cast<unsigned>((n + kBlockSize - 1) / kBlockSize);
-  if constexpr (min_blocks_v<F> > 1)
+  if constexpr (min_blocks_v<F> > 0)
     for_each_bounded_kernel<<<blocks, kBlockSize>>>(n, f);
   else
     for_each_kernel<<<blocks, kBlockSize>>>(n, f);

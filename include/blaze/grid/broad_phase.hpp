@@ -131,7 +131,9 @@ class BroadPhase {
     }
     if (with_reverse_) {
       reverse_.resize(std::max<std::size_t>(reverse_.size(), list_.size()));
-      for_each(Space{}, p.n, BuildReverse{neighbours()});
+      if (reduce_max(Space{}, p.n, BuildReverse{neighbours()}, 0) > 0)
+        throw std::logic_error("blaze broad phase: the neighbour list is not symmetric (some j does not list i back), "
+                               "so pairs cannot be evaluated once; this is a bug, please report it");
     }
     for (auto& c : reference_) c.resize(std::max<std::size_t>(c.size(), p.n));
     for_each(Space{}, p.n, CopyVec3<Real>{p.position, field(reference_)});

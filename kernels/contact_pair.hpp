@@ -1,0 +1,80 @@
+// The arithmetic of one particle-particle contact and of a particle's sums over its contacts,
+// shared by the kernel that evaluates each pair from both sides (contact_forces.hpp) and by the
+// pair and gather kernels that evaluate it once (pair_forces.hpp), so that the two paths cannot
+// drift apart (they agree bitwise on the host: verification/test_pair_evaluation.cpp).
+//   F_ij = law(m_i, m_j).force(geometry, v_rel, m_eff)           [N]
+//   v_rel = Kinematics::relative(v_i, w_i, p - x_i, v_j, w_j, p - x_j)  at the contact point p [m/s]
+//   m_eff = 1 / (1/m_i + 1/m_j)                                   [kg]
+//   T_i  += (p - x_i) x F_ij (thesis eq. 2.4)                     [N m]
+#pragma once
+#include "blaze/contact/kinematics.hpp"
+#include "blaze/laws/contact_law.hpp"
+#include "blaze/particles/particle_store.hpp"
+#include "blaze/sim/features.hpp"
+
+namespace blaze {
+
+// Per-particle contact counts by kind (null when statistics are off).
+struct ContactStats {
+  Index* vertex_face;
+  Index* edge_edge;
+};
+
+// What every pair of particle i needs of i, read once per thread.
+template <class Real, class Body>
+struct PairSide {
+  Body body;
+  Vec3<Real> v, w;  // w = 0 without Features::rotation
+  Real inv_mass;
+  int material;
+};
+
+template <class Features, class Shape, class Real>
+BLAZE_HD auto pair_side(const Shape& shape, const ParticleView<Real>& p, Index i) {
+  using Body = decltype(shape.body(p, i));
+  return PairSide<Real, Body>{shape.body(p, i), p.velocity.get(i),
+                              Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0}, p.inv_mass[i],
+                              p.material[i]};
+}
+
+// F_ij on i for the geometry g of i and j (normal pointing towards i).
+template <class Kinematics, class Features, class Law, class Real, class Body>
+BLAZE_HD Vec3<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p, const PairSide<Real, Body>& a,
+                               Index j, const Body& bj, const ContactGeometry<Real>& g) {
+  const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
+  const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
+  const Real m_eff = Real(1) / (a.inv_mass + p.inv_mass[j]);
+  return laws(a.material, p.material[j]).force(g, v_rel, m_eff);
+}
+
+// Particle i's sums over its contacts, added in list order and stored once: force, torque
+// (Features::rotation), deepest overlap / radius (Features::monitor, kept as the maximum with
+// what the host reset), and contact counts by kind (Features::statistics).
+template <class Real, class Features>
+struct ContactSums {
+  Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
+  Index vertex_face = 0, edge_edge = 0;
+  Real deepest = 0;
+
+  // The contact's kind and overlap (before its force is known).
+  BLAZE_HD void touch(bool edge, Real overlap) {
+    if constexpr (Features::statistics) (edge ? edge_edge : vertex_face) += 1;
+    if constexpr (Features::monitor) deepest = max_r(deepest, overlap);
+  }
+  // F_ij acting at the contact point, r = point - x_i.
+  BLAZE_HD void add(const Vec3<Real>& fij, const Vec3<Real>& r) {
+    f += fij;
+    if constexpr (Features::rotation) t += cross(r, fij);
+  }
+  BLAZE_HD void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
+    p.force.set(i, f);
+    if constexpr (Features::rotation) p.torque.set(i, t);
+    if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);
+    if constexpr (Features::statistics) {
+      stats.vertex_face[i] = vertex_face;
+      stats.edge_edge[i] = edge_edge;
+    }
+  }
+};
+
+}  // namespace blaze
