@@ -137,14 +137,25 @@ struct PolyhedronShape {
 #else
   static constexpr int kMinBlocks = 4;
 #endif
-  // The shape table travels by value in every kernel's arguments: CUDA's constant bank, read
-  // through the constant cache (one broadcast when a warp reads the same entry). Nothing may
-  // choose between it and another copy at run time: a pointer that could be either turns every
-  // table read into a generic load through L1 (issue 6: the former table_in_memory switch did
-  // that to both placements, which is why they measured the same).
+  // The shape table. The host reads `table`; kernels read `resident`, a copy of it in the
+  // space's memory that the Simulation makes (using Resident below), through L1. Read from
+  // the kernel arguments instead (CUDA's constant bank), every table read whose index is a
+  // register (the type, a loop's feature, the lane's chosen edge) is an indexed constant load,
+  // served by the SM's address-divergence unit: Nsight Compute found that unit 91% busy in the
+  // packed-cube pair kernel (87% for dodecahedra) while the FP32 pipe stood at 18%
+  // (bench/results/ncu/, issue 6). BLAZE_POLYHEDRON_TABLE_IN_CONSTANT restores the constant-bank
+  // reads for lever measurements (bench/results/levers/).
+  using Resident = PolyhedronTable<Real>;
   PolyhedronTable<Real> table;
+  const PolyhedronTable<Real>* resident = nullptr;
 
-  BLAZE_HD const PolyhedronData<Real>& data(int type) const { return table.type[type]; }
+  BLAZE_HD const PolyhedronData<Real>& data(int type) const {
+#if defined(__CUDA_ARCH__) && !defined(BLAZE_POLYHEDRON_TABLE_IN_CONSTANT)
+    return resident->type[type];
+#else
+    return table.type[type];
+#endif
+  }
 
   struct Body {
     Vec3<Real> x;

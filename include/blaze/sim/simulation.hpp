@@ -68,6 +68,19 @@ struct SimulationSnapshot {
   double removed_mass = 0, removed_energy = 0;
 };
 
+// A shape policy with a table that its kernels read from the space's memory names it Resident
+// and has members `table` and `resident` (polyhedron.hpp); the Simulation keeps that copy.
+template <class Shape, class = void>
+struct ResidentTable {
+  static constexpr bool value = false;
+  using type = char;
+};
+template <class Shape>
+struct ResidentTable<Shape, std::void_t<typename Shape::Resident>> {
+  static constexpr bool value = true;
+  using type = typename Shape::Resident;
+};
+
 template <class Space, class Shape, class Law, class Integrator, class Kinematics = ContactPointVelocity,
           class Features = FullFeatures>
 class Simulation {
@@ -80,6 +93,7 @@ class Simulation {
       : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(particles.radius)), params.skin) {
     check_params(params);
     check_materials(laws, world, particles);
+    reside_shape();
     store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);  // checks the lengths
     check_finite(particles, 0);
     world_.upload(world);
@@ -100,6 +114,7 @@ class Simulation {
     ParticleState<Real> materials_only;
     materials_only.material = snap.store.material;
     check_materials(laws, world, materials_only);
+    reside_shape();
     store_.restore(snap.store);
     world_.upload(world);
     steps_ = snap.steps;
@@ -395,7 +410,16 @@ class Simulation {
     if (!world_.empty()) timer_.time("walls", [&] { for_each(Space{}, n, world_forces()); });
   }
 
+  void reside_shape() {
+    if constexpr (ResidentTable<Shape>::value) {
+      resident_.resize(1);
+      copy_n(&shape_.table, 1, resident_.data(), Host{}, Space{});
+      shape_.resident = resident_.data();
+    }
+  }
+
   Shape shape_;
+  Buffer<typename ResidentTable<Shape>::type, Space> resident_;  // the shape's table where its kernels read it
   SimulationParams<Real> params_;
   PairTable<Law> laws_;
   Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
