@@ -30,7 +30,7 @@ struct PairSide {
 };
 
 template <class Features, class Shape, class Real>
-BLAZE_HD auto pair_side(const Shape& shape, const ParticleView<Real>& p, Index i) {
+BLAZE_HD_INLINE auto pair_side(const Shape& shape, const ParticleView<Real>& p, Index i) {
   using Body = decltype(shape.body(p, i));
   return PairSide<Real, Body>{shape.body(p, i), p.velocity.get(i),
                               Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0}, p.inv_mass[i],
@@ -39,7 +39,7 @@ BLAZE_HD auto pair_side(const Shape& shape, const ParticleView<Real>& p, Index i
 
 // F_ij on i for the geometry g of i and j (normal pointing towards i).
 template <class Kinematics, class Features, class Law, class Real, class Body>
-BLAZE_HD Vec3<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p, const PairSide<Real, Body>& a,
+BLAZE_HD_INLINE Vec3<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p, const PairSide<Real, Body>& a,
                                Index j, const Body& bj, const ContactGeometry<Real>& g) {
   const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
   const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
@@ -57,16 +57,16 @@ struct ContactSums {
   Real deepest = 0;
 
   // The contact's kind and overlap (before its force is known).
-  BLAZE_HD void touch(bool edge, Real overlap) {
+  BLAZE_HD_INLINE void touch(bool edge, Real overlap) {
     if constexpr (Features::statistics) (edge ? edge_edge : vertex_face) += 1;
     if constexpr (Features::monitor) deepest = max_r(deepest, overlap);
   }
   // F_ij acting at the contact point, r = point - x_i.
-  BLAZE_HD void add(const Vec3<Real>& fij, const Vec3<Real>& r) {
+  BLAZE_HD_INLINE void add(const Vec3<Real>& fij, const Vec3<Real>& r) {
     f += fij;
     if constexpr (Features::rotation) t += cross(r, fij);
   }
-  BLAZE_HD void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
+  BLAZE_HD_INLINE void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, t);
     if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);

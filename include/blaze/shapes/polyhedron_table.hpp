@@ -1,7 +1,8 @@
 // Polyhedron shape data as kernels read it: fixed-capacity arrays (feature_caps.hpp), body frame,
-// one entry per particle type. The whole table travels by value in the kernel's arguments, which
-// CUDA places in the constant bank: every thread of a warp reading vertex k of the same type is
-// one broadcast (the thesis kept its Particle_Object in constant memory, section 2.2.1).
+// one entry per particle type. The thesis kept its Particle_Object in constant memory (section
+// 2.2.1); so did we until the profile of issue 6 showed why not: the kernels index the table with
+// registers (type, feature, the edge a lane picked), and indexed constant loads all queue on one
+// unit per SM. Kernels read a copy in device memory instead (PolyhedronShape::resident), through L1.
 #pragma once
 #include <cstdint>
 #include <stdexcept>
