@@ -37,10 +37,11 @@ BLAZE_HD_INLINE auto pair_side(const Shape& shape, const ParticleView<Real>& p, 
                               p.material[i]};
 }
 
-// F_ij on i for the geometry g of i and j (normal pointing towards i).
+// F_ij on i for the geometry g of i and j (normal from i towards j, contact_geometry.hpp).
 template <class Kinematics, class Features, class Law, class Real, class Body>
-BLAZE_HD_INLINE Vec3<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p, const PairSide<Real, Body>& a,
-                               Index j, const Body& bj, const ContactGeometry<Real>& g) {
+BLAZE_HD_INLINE Vec3<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
+                                      const PairSide<Real, Body>& a, Index j, const Body& bj,
+                                      const ContactGeometry<Real>& g) {
   const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
   const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
   const Real m_eff = Real(1) / (a.inv_mass + p.inv_mass[j]);

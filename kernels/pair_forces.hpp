@@ -6,10 +6,10 @@
 //   GatherPairForces: for every particle i, walk its list in order and add F_ij and
 //                     (point - x_i) x F_ij from its own slots (j > i) or, with F_ij = -F_ji, from
 //                     j's slot for i (j < i; the slot comes from the list's reverse index).
-// The arithmetic is ContactForces's (contact_forces.hpp, through contact_pair.hpp) for the lower index: the higher one's
-// force there is the exact negation (v_rel = a - b against b - a, the normal negated, and every
-// product and the friction branch unchanged by the two signs), its torque the same expression,
-// and both kernels add in list order. So the result is bitwise that of ContactForces, for half
+// The arithmetic is ContactForces's (both through contact_pair.hpp) for the lower index: the
+// higher one's force there is the exact negation (v_rel = a - b against b - a, the normal
+// negated, and every product and the friction branch unchanged by the two signs), its torque the
+// same expression, and both kernels add in list order. So the result is bitwise that of ContactForces, for half
 // its collisions and law evaluations, at the cost of a slot per list entry: 6 reals (3 without
 // rotation), a state byte, the overlap with Features::monitor, and the 4-byte reverse index,
 // 29 B per entry in float. It pays where a pair costs more than those bytes: polyhedra (1.8x on
