@@ -28,6 +28,7 @@
 #include "bench/cases.hpp"
 #include "blaze/exec/device_info.hpp"
 #include "blaze/io/manifest.hpp"
+#include "blaze/io/console.hpp"
 
 using namespace blaze;
 using namespace blaze::bench;
@@ -96,6 +97,7 @@ void write_csv(const std::string& file, const std::vector<std::string>& earlier,
 }  // namespace
 
 int main(int argc, char** argv) {
+  blaze::line_buffered_output();
   std::string out_dir = "bench/results";
   long max_n = 0, min_n = 0;
   std::string cases = "spheres,polyhedra,packed,surfaces,skip,mill", tag_suffix;

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -18,15 +19,17 @@
 #include <set>
 #include <sstream>
 #include "blaze/scene/critical_step.hpp"
+#include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "blaze/world/planar_polygon.hpp"
+#include "blaze/grid/grid_spec.hpp"
 
 namespace blaze {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr long kMaxParticles = 1L << 31;  // Index is 32-bit
+constexpr long kMaxParticles = (1L << 31) - 1;  // Index is a signed 32-bit integer
 
 // "file:line", or the command line for values that came from --set (copied nodes keep no source).
 std::string where(const toml::source_region& s, const std::string& file) {
@@ -178,6 +181,15 @@ class Fields {
 
   const std::string& label() const { return label_; }
   const std::string& file() const { return file_; }
+  // "file:line" of a key (of the table when the key is absent: its default was taken).
+  std::string where_of(const std::string& key) const {
+    const toml::node* n = get(key);
+    return where(n ? n->source() : t_.source(), file_);
+  }
+  // Records where each key is for the derived-size and run checks (Scene::where).
+  void note(Scene& s, const std::string& prefix, std::initializer_list<const char*> keys) const {
+    for (const char* k : keys) s.where[prefix + k] = where_of(k);
+  }
 
  private:
   double checked(const toml::node& n, const std::string& key, const Range& r) const {
@@ -215,45 +227,85 @@ class Fields {
 
 // ---- command-line overrides -----------------------------------------------------------------
 
-// Splits "material[1].density" into {"material", "1", "density"}.
-std::vector<std::string> split_path(const std::string& path) {
+// The key grammar of --set, parsed strictly (a loose split accepted "material[0.density" and
+// "material[0]density" as material[0].density):
+//   key   := name ( '.' name | '[' digits ']' )*      name := [A-Za-z_][A-Za-z0-9_]*
+// An index follows a name (or another index) directly; a name after an index needs its dot.
+// Returns the parts ("material", "1", "density"), or throws naming the offending character.
+std::vector<std::string> split_path(const std::string& key, const std::string& arg) {
   std::vector<std::string> parts;
-  std::string cur;
-  for (char c : path) {
-    if (c == '.' || c == '[' || c == ']') {
-      if (!cur.empty()) parts.push_back(cur);
-      cur.clear();
+  const auto bad = [&](std::size_t at, const std::string& why) {
+    throw SceneError("command line --set " + arg + ": bad key '" + key + "' at character " + std::to_string(at + 1) + ": " +
+                     why + " (keys are name, table.name or table[index].name; names of letters, digits and '_')");
+  };
+  const auto is_name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::size_t k = 0;
+  bool expect_name = true;  // at the start and after a '.'
+  while (k < key.size()) {
+    if (expect_name) {
+      if (!std::isalpha(static_cast<unsigned char>(key[k])) && key[k] != '_') bad(k, "a name must start here");
+      const std::size_t begin = k;
+      while (k < key.size() && is_name_char(key[k])) ++k;
+      parts.push_back(key.substr(begin, k - begin));
+      expect_name = false;
+    } else if (key[k] == '.') {
+      ++k;
+      expect_name = true;
+      if (k == key.size()) bad(k - 1, "a name must follow '.'");
+    } else if (key[k] == '[') {
+      const std::size_t begin = ++k;
+      while (k < key.size() && std::isdigit(static_cast<unsigned char>(key[k]))) ++k;
+      if (k == begin) bad(k, "an index (digits) must follow '['");
+      if (k == key.size() || key[k] != ']') bad(k, "the index must be closed by ']'");
+      if (k - begin > 9) bad(begin, "the index is too large");
+      parts.push_back(key.substr(begin, k - begin));
+      ++k;
+      if (k < key.size() && key[k] != '.' && key[k] != '[') bad(k, "'.' or '[' must follow ']'");
     } else {
-      cur += c;
+      bad(k, std::string("unexpected '") + key[k] + "'");
     }
   }
-  if (!cur.empty()) parts.push_back(cur);
+  if (parts.empty()) bad(0, "empty key");
   return parts;
 }
+
+// True when parts[k] came from an index in brackets (digits only; names start with a letter or '_').
+bool is_index(const std::string& part) { return !part.empty() && std::isdigit(static_cast<unsigned char>(part[0])); }
 
 void apply_override(toml::table& root, const std::string& arg) {
   const auto eq = arg.find('=');
   const std::string usage = "--set " + arg + ": expected key=value, for example --set simulation.dt=1e-5";
   if (eq == std::string::npos || eq == 0 || eq + 1 == arg.size()) throw SceneError(usage);
   const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
-  std::vector<std::string> parts = split_path(key);
-  if (parts.empty()) throw SceneError(usage);
+  // One value on one line: a newline would end the value and start another TOML key (silently
+  // dropped or, worse, applied), and other control characters have no place in a value.
+  for (char c : text)
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\t')
+      throw SceneError("command line --set " + key + "=...: the value contains a control character (a newline?); "
+                       "give one value on one line");
+  std::vector<std::string> parts = split_path(key, arg);
+  if (is_index(parts[0])) throw SceneError("command line --set " + arg + ": a key starts with a name");
   if (parts.size() == 1) {  // bare key: [simulation], or [output] or [study] where the key is there
     const bool in_sim = !!root["simulation"][parts[0]];
     const char* table = !in_sim && root["output"][parts[0]] ? "output" : !in_sim && root["study"][parts[0]] ? "study" : "simulation";
     parts.insert(parts.begin(), table);
   }
-  // The value as TOML; a bare word (precision=float) is taken as a string.
+  if (is_index(parts.back())) throw SceneError("command line --set " + arg + ": the key must end with a name, as material[0].density");
+  // The value as TOML; a bare word (precision=float) is taken as a string. Exactly one value:
+  // "v = 1 x = 2" does not parse, and nothing but v may come out of it.
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + text, "--set " + arg);
   } catch (const toml::parse_error&) {
+    if (text.find('"') != std::string::npos || text.find('\\') != std::string::npos)
+      throw SceneError("command line --set " + arg + ": the value is not TOML");
     try {
       parsed = toml::parse("v = \"" + text + "\"", "--set " + arg);
     } catch (const toml::parse_error& e) {
       throw SceneError("command line --set " + arg + ": the value is not TOML: " + std::string(e.description()));
     }
   }
+  if (parsed.size() != 1 || !parsed.contains("v")) throw SceneError("command line --set " + arg + ": the value is not one TOML value");
   toml::table* t = &root;
   // Keys that stand for one another: setting one on the command line drops the other.
   static const std::map<std::string, std::string> alternative = {
@@ -261,9 +313,11 @@ void apply_override(toml::table& root, const std::string& arg) {
       {"contact_time", "stiffness"}, {"radius", "shape"}, {"shape", "radius"}};
   for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
     toml::node* next = t->get(parts[k]);
+    if (is_index(parts[k])) throw SceneError("command line --set " + arg + ": index [" + parts[k] + "] of something that is not a list of tables");
     if (next && next->is_array()) {  // array of tables: the next part is an index
       toml::array* a = next->as_array();
-      if (k + 2 >= parts.size()) throw SceneError("command line --set " + arg + ": '" + parts[k] + "' needs an index, as " + parts[k] + "[0].key");
+      if (k + 2 >= parts.size() || !is_index(parts[k + 1]))
+        throw SceneError("command line --set " + arg + ": '" + parts[k] + "' needs an index, as " + parts[k] + "[0].key");
       char* end = nullptr;
       const long i = std::strtol(parts[k + 1].c_str(), &end, 10);
       if (*end || i < 0 || static_cast<std::size_t>(i) >= a->size() || !a->get(static_cast<std::size_t>(i))->is_table())
@@ -325,7 +379,8 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
-                                        "domain_lo", "domain_hi", "skin", "pair_evaluation", "force_dt", "max_impact_speed", "seed"});
+                                        "domain_lo", "domain_hi", "skin", "pair_evaluation", "force_dt", "max_impact_speed", "seed",
+                                        "force_long_run"});
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
   s.precision = static_cast<PrecisionKind>(f.choice("precision", {"float", "double"}, 1));
   s.backend = static_cast<BackendKind>(f.choice("backend", {"auto", "cpu", "gpu"}, 0));
@@ -348,6 +403,9 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   s.force_dt = f.boolean_or("force_dt", false);
   s.max_impact_speed = f.number_or("max_impact_speed", 0, non_negative("m/s"));
   s.seed = static_cast<std::uint64_t>(f.integer_or("seed", 1, 0, std::numeric_limits<long>::max()));
+  s.force_long_run = f.boolean_or("force_long_run", false);
+  f.note(s, "simulation.", {"dt", "steps_per_contact", "end_time", "domain_lo", "domain_hi", "skin", "max_impact_speed",
+                            "precision", "force_long_run"});
 }
 
 void read_output(const toml::table& t, const std::string& file, Scene& s) {
@@ -359,6 +417,7 @@ void read_output(const toml::table& t, const std::string& file, Scene& s) {
   s.output.checkpoint_interval = f.number_or("checkpoint_interval", 0, non_negative("s (0: no checkpoints)"));
   s.output.penetration_warning = f.number_or("penetration_warning", 0.05, {0, 1, true, false, "overlap / radius"});
   s.output.energy_gain_limit = f.number_or("energy_gain_limit", 0.05, {0, 1, true, false, "x the energy scale"});
+  f.note(s, "output.", {"csv_interval", "vtu_interval", "checkpoint_interval"});
 }
 
 // [study]: numbers only, read by name by a study driver (Scene::study_value), which also rejects
@@ -508,7 +567,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
       l.count[static_cast<std::size_t>(j)] = static_cast<long>(e->as_integer()->get());
       sites *= static_cast<double>(l.count[static_cast<std::size_t>(j)]);
     }
-    if (sites > static_cast<double>(kMaxParticles)) f.fail(*c, "count", "at most 2^31 sites");
+    if (sites > static_cast<double>(kMaxParticles)) f.fail(*c, "count", "at most 2^31 - 1 sites");
     l.spacing = f.number("spacing", {2 * r, kInf, false, false, "m (at least 2 bounding radii: no overlap)"});
     l.velocity = f.vec3_or("velocity", {0, 0, 0}, any("m/s"));
     l.jitter = f.number_or("jitter", 0, {0, 1, false, false, "x the free gap between neighbours"});
@@ -517,6 +576,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
     if (!inside_domain(s, l.origin, r) || !inside_domain(s, last, r))
       f.fail(*f.get("origin"), "origin", "the lattice (origin + (count - 1) spacing, plus the radius) must lie inside the domain");
     total += static_cast<long>(sites);
+    f.note(s, "lattice[" + std::to_string(k) + "].", {"count", "origin", "velocity"});
     s.lattices.push_back(l);
   }
   const auto lists = tables(root, "particles", file);
@@ -533,6 +593,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
       if (!inside_domain(s, l.position[i], r))
         f.fail(*f.get("positions"), "positions", "point " + std::to_string(i) + " (and its radius) must lie inside the domain");
     total += static_cast<long>(l.position.size());
+    f.note(s, "particles[" + std::to_string(k) + "].", {"positions", "velocities"});
     s.lists.push_back(l);
   }
   const auto fills = tables(root, "fill", file);
@@ -554,6 +615,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
              "near 0.38, so at most 0.3 is allowed (use a larger box or a [[lattice]])");
     l.velocity = f.vec3_or("velocity", {0, 0, 0}, any("m/s"));
     total += l.count;
+    f.note(s, "fill[" + std::to_string(k) + "].", {"count", "lo", "hi", "velocity"});
     s.fills.push_back(l);
   }
   return total;
@@ -655,6 +717,102 @@ void check_time_step(const toml::table& sim, const std::string& file, Scene& s) 
   f.fail(*f.get(key), key, allowed.str());
 }
 
+// Where every key of the file (and of --set) is, by its --set name (Scene::where).
+void record_places(const toml::table& root, const std::string& file, Scene& s) {
+  for (const auto& [k, v] : root) {
+    const std::string name(k.str());
+    if (const toml::table* t = v.as_table()) {
+      for (const auto& [key, value] : *t) s.where[name + "." + std::string(key.str())] = where(value.source(), file);
+    } else if (const toml::array* a = v.as_array()) {
+      for (std::size_t i = 0; i < a->size(); ++i)
+        if (const toml::table* item = a->get(i)->as_table())
+          for (const auto& [key, value] : *item)
+            s.where[name + "[" + std::to_string(i) + "]." + std::string(key.str())] = where(value.source(), file);
+    }
+  }
+}
+
+std::string shown_vec(const Vec3<double>& v) {
+  return "[" + Scene::shortest(v.x) + ", " + Scene::shortest(v.y) + ", " + Scene::shortest(v.z) + "]";
+}
+
+// The largest initial speed of any placement (m/s), and where it is.
+double largest_initial_speed(const Scene& s, std::string& key) {
+  double v0 = 0;
+  for (std::size_t k = 0; k < s.lattices.size(); ++k)
+    if (norm(s.lattices[k].velocity) > v0) v0 = norm(s.lattices[k].velocity), key = "lattice[" + std::to_string(k) + "].velocity";
+  for (std::size_t k = 0; k < s.fills.size(); ++k)
+    if (norm(s.fills[k].velocity) > v0) v0 = norm(s.fills[k].velocity), key = "fill[" + std::to_string(k) + "].velocity";
+  for (std::size_t k = 0; k < s.lists.size(); ++k)
+    for (const auto& v : s.lists[k].velocity)
+      if (norm(v) > v0) v0 = norm(v), key = "particles[" + std::to_string(k) + "].velocities";
+  return v0;
+}
+
+// Derived sizes (run_size.hpp), computed in double and refused before anything is allocated,
+// naming the key that makes them too large: the grid's cells, the step count.
+void check_sizes(Scene& s) {
+  const RunSize z = run_size(s, false);
+  if (!(z.cells[0] < 2147483647.0 && z.cells[1] < 2147483647.0 && z.cells[2] < 2147483647.0 && z.cells_total < GridSpec<double>::kMaxCells)) {
+    char msg[320];
+    std::snprintf(msg, sizeof msg, ": the domain spans %.3g x %.3g x %.3g = %.3g cells of 2 r_max + skin = %.3g m; at most "
+                  "4.29e9 in all (32-bit cell hashes): shrink the domain (particles that leave it are removed) or raise skin",
+                  z.cells[0], z.cells[1], z.cells[2], z.cells_total, z.cell);
+    throw SceneError(s.place("simulation.domain_hi") + " = " + shown_vec(s.domain_hi) + msg);
+  }
+  const char* dt_key = s.steps_per_contact > 0 ? "simulation.steps_per_contact" : "simulation.dt";
+  if (s.end_time < s.dt)
+    throw SceneError(s.place("simulation.end_time") + " = " + Scene::shortest(s.end_time) + ": shorter than one time step (dt = " +
+                     Scene::shortest(s.dt) + " s); give end_time >= dt");
+  if (!(z.steps <= kMaxSteps))
+    throw SceneError(s.place(dt_key) + ": end_time / dt = " + Scene::shortest(s.end_time) + " s / " + Scene::shortest(s.dt) +
+                     " s = " + Scene::shortest(z.steps) + " steps; at most " + Scene::shortest(kMaxSteps) +
+                     " (a step takes at least a microsecond: such a run cannot finish). Raise dt or lower end_time");
+}
+
+// max_impact_speed sets the stiffness and overlap estimates: a particle that starts faster than it
+// overlaps more than estimated and can tunnel through a wall.
+void check_impact_speed(const toml::table& sim, const std::string& file, const Scene& s) {
+  if (!(s.max_impact_speed > 0)) return;
+  std::string key;
+  const double v0 = largest_initial_speed(s, key);
+  if (v0 <= s.max_impact_speed) return;
+  Fields f(sim, "[simulation]", file);
+  f.fail(*f.get("max_impact_speed"), "max_impact_speed",
+         "below the initial speed " + Scene::shortest(v0) + " m/s of " + s.place(key) +
+             "; a particle faster than max_impact_speed overlaps more than estimated and can tunnel through a wall: "
+             "give at least " + Scene::shortest(v0) + " m/s (or leave it out: the default covers every initial speed)");
+}
+
+// Float resolution far from the origin: positions are held to ulp(|x|) (2^-23 |x| in float), and a
+// contact's overlap is a difference of positions. Where ulp at the domain's largest coordinate is
+// not small against the overlap of an impact (impact_overlap x the smallest radius, the least
+// overlap the contacts must resolve), forces come out in steps of ulp k, and such a run's energy
+// guard blames the time step. Refused above a tenth of the overlap, noted above a hundredth.
+void check_resolution(Scene& s) {
+  const double far = std::max({std::fabs(s.domain_lo.x), std::fabs(s.domain_lo.y), std::fabs(s.domain_lo.z),
+                               std::fabs(s.domain_hi.x), std::fabs(s.domain_hi.y), std::fabs(s.domain_hi.z)});
+  const bool single = s.precision == PrecisionKind::float32;
+  const double ulp = single ? static_cast<double>(std::nextafter(static_cast<float>(far), INFINITY) - static_cast<float>(far))
+                            : std::nextafter(far, INFINITY) - far;
+  double r_min = INFINITY;
+  for (const auto& t : s.types) r_min = std::min(r_min, t.size());
+  const double overlap = s.impact_overlap * r_min;
+  if (!(overlap > 0)) return;
+  const double ratio = ulp / overlap;
+  char numbers[320];
+  std::snprintf(numbers, sizeof numbers, "positions %.3g m from the origin are resolved to %.3g m in %s, %.3g of the overlap of "
+                "an impact at %.3g m/s (%.3g m = %.3g of the smallest radius)", far, ulp, single ? "float" : "double", ratio,
+                s.impact_speed, overlap, s.impact_overlap);
+  if (ratio > kMaxResolutionShare)
+    throw SceneError(s.place("simulation.domain_hi") + ": " + numbers + "; above " + Scene::shortest(kMaxResolutionShare) +
+                     " contacts cannot be resolved. Move the scene's origin near the particles" +
+                     (single ? std::string(" or set precision = \"double\"") : std::string()));
+  if (ratio > kNoteResolutionShare)
+    s.notes.push_back(std::string("note: ") + numbers + "; contact forces are coarse above " +
+                      Scene::shortest(kNoteResolutionShare) + (single ? " (precision = \"double\" resolves them)" : ""));
+}
+
 Scene read(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(root, o);
   static const std::set<std::string> known = {"simulation", "output", "material", "pair", "particle_type",
@@ -667,6 +825,7 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
     }
   Scene s;
   s.path = file;
+  record_places(root, file, s);
   if (!root.contains("simulation")) throw SceneError(file + ": no [simulation] table (dt or steps_per_contact, end_time, domain_lo, domain_hi)");
   read_simulation(table(root, "simulation", file), file, s);
   read_output(table(root, "output", file), file, s);
@@ -676,10 +835,13 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
   read_types(root, file, s);
   const long total = read_placements(root, file, s);
   if (total == 0) throw SceneError(file + ": no particles: add a [[lattice]], [[particles]] or [[fill]]");
-  if (total > kMaxParticles) throw SceneError(file + ": " + std::to_string(total) + " particles; at most 2^31");
+  if (total > kMaxParticles) throw SceneError(file + ": " + std::to_string(total) + " particles; at most 2^31 - 1");
   read_world(root, file, s);
   check_pairs_complete(root, file, s);
   check_time_step(table(root, "simulation", file), file, s);
+  check_impact_speed(table(root, "simulation", file), file, s);
+  check_sizes(s);
+  check_resolution(s);
   return s;
 }
 

@@ -255,6 +255,22 @@ BOOST_AUTO_TEST_CASE(command_line_overrides_are_applied_and_validated) {
       {"dt", "expected key=value"},
       {"material[7].density=1", "index '7' of 'material' must be 0..1"},
       {"simulation.dtt=1", "unknown key 'dtt'"},
+      // The key grammar is strict (issue 17): no unclosed index, no name glued to an index.
+      {"material[0.density=1000", "the index must be closed by ']'"},
+      {"material[0]density=1000", "'.' or '[' must follow ']'"},
+      {"material.0.density=1000", "a name must start here"},
+      {"material[].density=1000", "an index (digits) must follow '['"},
+      {"material[-1].density=1000", "an index (digits) must follow '['"},
+      {"material[0]=1000", "the key must end with a name"},
+      {"material.density=1000", "'material' needs an index"},
+      {"simulation[0].dt=1e-5", "not a list of tables"},
+      {"simulation..dt=1e-5", "a name must start here"},
+      {"simulation.dt.=1e-5", "a name must follow '.'"},
+      {"sim ulation.dt=1e-5", "unexpected ' '"},
+      {"dt=1e-5\nend_time = 5", "control character"},
+      {"dt=1e-5\rx", "control character"},
+      {"dt=1e-5 end_time = 5", "not TOML"},
+      {"precision=\"float", "not TOML"},
   };
   for (const auto& c : bad) {
     const std::string msg = rejection([&] { parse_scene(kBase, "scene.toml", {c.first}); });

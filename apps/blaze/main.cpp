@@ -19,9 +19,12 @@
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "blaze/scene/run_size.hpp"
+#include "blaze/scene/scene_identity.hpp"
 #include "blaze/sim/run_log.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/simulation.hpp"
+#include "blaze/io/console.hpp"
 
 using namespace blaze;
 
@@ -39,8 +42,10 @@ const char* kUsage =
     "                   --set material[0].density=2600; repeatable; validated like the file\n"
     "  --restart FILE   continue the run from a checkpoint written by it (same scene; the time\n"
     "                   series and frames after the checkpoint's time are replaced)\n"
-    "  --quiet          no progress line (it is also off when stderr is not a terminal)\n"
-    "  --check          validate the scene, print the critical time step and stop\n"
+    "  --quiet          no progress line (on a terminal it is redrawn twice a second; into a\n"
+    "                   file or pipe a line is written every minute)\n"
+    "  --check          validate the scene, print the critical time step, the sizes and the\n"
+    "                   memory estimate (host and GPU) against this machine, and stop\n"
     "  --help, -h       this text\n"
     "\n"
     "Writes to [output] directory: timeseries.csv (every csv_interval), particles.pvd with\n"
@@ -86,25 +91,28 @@ Options parse_args(int argc, char** argv) {
   return o;
 }
 
-// "t = 0.25 / 1 s (25%)  3.1e+06 particle-steps/s  ETA 12 s" on one terminal line.
+// "t = 0.25 / 1 s (25%)  3.1e+06 particle-steps/s  ETA 12 s": on a terminal one line redrawn
+// twice a second; into a file or a pipe (a batch job) a line every minute, so that a long run is
+// never silent. --quiet turns both off.
 class Progress {
  public:
-  Progress(bool on, double end_time) : on_(on && isatty(2)), end_(end_time), start_(clock::now()), last_(start_) {}
+  Progress(bool on, double end_time)
+      : on_(on), tty_(isatty(2)), end_(end_time), start_(clock::now()), last_(start_) {}
   void update(double t, double particle_steps, bool force = false) {
     if (!on_) return;
     const auto now = clock::now();
-    if (!force && std::chrono::duration<double>(now - last_).count() < 0.5) return;
+    if (!force && std::chrono::duration<double>(now - last_).count() < (tty_ ? 0.5 : 60.0)) return;
+    if (force && !tty_) return;  // the summary line follows
     last_ = now;
     const double wall = std::chrono::duration<double>(now - start_).count(), frac = t / end_;
     const double eta = frac > 0 ? wall * (1 - frac) / frac : 0;
-    std::fprintf(stderr, "\r  t = %.4g / %.4g s (%3.0f%%)  %.3g particle-steps/s  ETA %.0f s   ", t, end_, 100 * frac,
-                 wall > 0 ? particle_steps / wall : 0.0, eta);
-    if (force) std::fputc('\n', stderr);
+    std::fprintf(stderr, "%s  t = %.4g / %.4g s (%3.0f%%)  %.3g particle-steps/s  ETA %.0f s   %s", tty_ ? "\r" : "", t, end_,
+                 100 * frac, wall > 0 ? particle_steps / wall : 0.0, eta, tty_ && !force ? "" : "\n");
   }
 
  private:
   using clock = std::chrono::steady_clock;
-  bool on_;
+  bool on_, tty_;
   double end_;
   clock::time_point start_, last_;
 };
@@ -133,16 +141,15 @@ int run_scene(const Scene& s, const Options& o) {
                                    once ? PairEvaluation::once : PairEvaluation::both_sides};
   const World<Real> world = build_world<Real>(s);
   using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
-  // The run's identity, checked on restart: a checkpoint continues only the run that wrote it.
-  char identity[160];
-  std::snprintf(identity, sizeof identity, "dt=%.17g law=%s precision=%s shape=%s particles=%zu", s.dt, to_string(s.law),
-                to_string(s.precision), Shape::name, particles.size());
+  // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,
+  // and every physical input of the scene must be as it was (scene_identity.hpp).
+  const std::string identity = identity_text(scene_identity(s));
   Checkpoint<Real> restart;
+  std::string restart_log;  // the run's own bookkeeping saved after the identity
   if (!o.restart.empty()) {
     restart = read_checkpoint<Real>(o.restart);
-    if (restart.text.rfind(identity, 0) != 0)
-      throw CheckpointError(o.restart + ": written by another run (" + restart.text.substr(0, restart.text.find('\n')) +
-                            "), this scene gives " + identity);
+    const std::string why = identity_difference(restart.text, scene_identity(s), s, restart_log);
+    if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
   }
   Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
                               : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
@@ -158,17 +165,15 @@ int run_scene(const Scene& s, const Options& o) {
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
   int frame = 0;
   if (!o.restart.empty()) {
-    log.resume(restart.text.substr(restart.text.find('\n') + 1));
+    log.resume(restart_log);
     frame = static_cast<int>(pvd.resume(resume_at));
     pvd_faces.resume(resume_at);
     std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
                 static_cast<unsigned long long>(sim.steps()), sim.time());
   }
 
-  const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));
-  const auto every = [&](double interval) {
-    return interval > 0 ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / s.dt))) : 0;
-  };
+  const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));  // <= kMaxSteps (validated)
+  const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
   const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
   const std::uint64_t checkpoint_every = every(s.output.checkpoint_interval);
   Progress progress(!o.quiet, s.end_time);
@@ -196,7 +201,7 @@ int run_scene(const Scene& s, const Options& o) {
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
     if (checkpoint_every && k > first && k % checkpoint_every == 0)
-      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), std::string(identity) + "\n" + log.save());
+      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save());
     if (write_csv || write_vtu) {
       const auto st = sim.state();
       last_good = st;
@@ -253,6 +258,7 @@ int run_precision(const Scene& s, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  blaze::line_buffered_output();
   const Options o = parse_args(argc, argv);
   const Scene s = load_scene(o.scene, o.overrides);
   const bool gpu_build = std::string(DefaultSpace::name) == "gpu";
@@ -267,6 +273,21 @@ int main(int argc, char** argv) try {
   std::printf("impact at %.3g m/s: deepest elastic overlap %.3g%% of the radius (%s)%s\n", s.impact_speed,
               100 * s.impact_overlap, s.overlap_governing.c_str(),
               s.impact_overlap > s.output.penetration_warning ? ", above penetration_warning" : "");
+  for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
+  // Derived sizes against this machine, before anything is allocated (run_size.hpp).
+  const RunSize size = run_size(s, gpu_build);
+  const double host_free = available_memory(Host{});
+  std::printf("size: %.4g particles, %.4g steps, %.3g x %.3g x %.3g grid cells; memory estimate %s of host memory (%s "
+              "available)", size.particles, size.steps, size.cells[0], size.cells[1], size.cells[2],
+              gigabytes(size.host_bytes).c_str(), host_free > 0 ? gigabytes(host_free).c_str() : "unknown");
+  double device_free = 0;
+  if (gpu_build) {
+    device_free = available_memory(DefaultSpace{});
+    std::printf(", %s of GPU memory (%s free)", gigabytes(size.device_bytes).c_str(), gigabytes(device_free).c_str());
+  }
+  const double seconds = estimated_seconds(size, gpu_build, host_threads());
+  std::printf("; at least %.3g s of wall time\n", seconds);
+  check_run_fits(s, size, gpu_build, host_free > 0 ? host_free : INFINITY, device_free, host_threads());
   if (o.check) return 0;
   return s.precision == PrecisionKind::float32 ? run_precision<float>(s, o) : run_precision<double>(s, o);
 } catch (const SceneError& e) {

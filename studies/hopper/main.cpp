@@ -26,6 +26,7 @@
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
 #include "blaze/sim/simulation.hpp"
+#include "blaze/io/console.hpp"
 
 using namespace blaze;
 using Real = double;
@@ -169,6 +170,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  blaze::line_buffered_output();
   std::string path = "studies/hopper/hopper.toml";
   std::vector<std::string> overrides;
   for (int k = 1; k < argc; ++k) {
@@ -180,6 +182,11 @@ int main(int argc, char** argv) try {
   const Scene s = load_scene(path, overrides);
   if (!s.all_spheres()) throw SceneError(path + ": the hopper study takes spheres only");
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the hopper study runs in double: precision = \"double\"");
+  for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
+  const bool gpu = std::string(DefaultSpace::name) == "gpu";
+  const double host_free = available_memory(Host{});
+  check_run_fits(s, run_size(s, gpu), gpu, host_free > 0 ? host_free : INFINITY, gpu ? available_memory(DefaultSpace{}) : 0,
+                 host_threads());
   return s.law == LawKind::linear ? run<LinearLaw<Real>>(s, overrides) : run<HertzLaw<Real>>(s, overrides);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());

@@ -18,6 +18,7 @@
 #include "verification/cases/drag_fall.hpp"
 #include "verification/cases/falling_particles.hpp"
 #include "verification/cases/head_on.hpp"
+#include "blaze/io/console.hpp"
 
 using namespace blaze;
 namespace cs = blaze::test::cases;
@@ -88,6 +89,7 @@ std::string label(const Point& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  blaze::line_buffered_output();
   bool quick = false;
   std::string out_dir = "verification/results";
   for (int k = 1; k < argc; ++k) {

@@ -2,6 +2,7 @@
 // raw pointers through views.
 #pragma once
 #include <cstring>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -32,7 +33,9 @@ class Buffer {
   // Contents are discarded when the size changes.
   void resize(std::size_t n) {
     if (n == size_) return;
+    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw OutOfMemory("buffer: " + std::to_string(n) + " elements overflow the address space");
     Space::deallocate(data_);
+    data_ = nullptr, size_ = 0;  // an allocation that throws leaves an empty buffer, not a dangling one
     data_ = static_cast<T*>(Space::allocate(n * sizeof(T)));
     size_ = n;
   }

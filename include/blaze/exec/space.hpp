@@ -13,13 +13,19 @@
 
 namespace blaze {
 
+// An allocation that the memory space could not satisfy; what() names the space and the size.
+// (The run's memory estimate, memory_estimate.hpp, is meant to refuse such a scene before.)
+struct OutOfMemory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct Host {
   static constexpr const char* name = "cpu";
   static void* allocate(std::size_t bytes) {
     if (bytes == 0) return nullptr;
     const std::size_t rounded = (bytes + 63) / 64 * 64;
     void* p = std::aligned_alloc(64, rounded);
-    if (!p) throw std::bad_alloc();
+    if (!p) throw OutOfMemory("out of host memory: an allocation of " + std::to_string(bytes) + " bytes failed");
     return p;
   }
   static void deallocate(void* p) { std::free(p); }
@@ -36,7 +42,12 @@ struct Cuda {
   static void* allocate(std::size_t bytes) {
     if (bytes == 0) return nullptr;
     void* p = nullptr;
-    cuda_check(cudaMalloc(&p, bytes), "cudaMalloc");
+    const cudaError_t err = cudaMalloc(&p, bytes);
+    if (err == cudaErrorMemoryAllocation) {
+      (void)cudaGetLastError();  // clear it: the context stays usable for the report
+      throw OutOfMemory("out of GPU memory: an allocation of " + std::to_string(bytes) + " bytes failed");
+    }
+    cuda_check(err, "cudaMalloc");
     return p;
   }
   static void deallocate(void* p) {

@@ -9,6 +9,7 @@
 // cells around a particle's cell hold every particle it can touch before the next rebuild. (The
 // thesis says "the largest bound radius": with cells one radius wide, 27 cells miss pairs.)
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include "blaze/core/vec3.hpp"
@@ -17,6 +18,8 @@ namespace blaze {
 
 template <class Real>
 struct GridSpec {
+  // Cells are hashed to 32 bits and the key nx ny nz marks "outside": fewer than 2^32 - 1 cells.
+  static constexpr double kMaxCells = 4294967295.0;
   Vec3<Real> lo;    // m, grid origin W
   Vec3<Real> hi;    // m, far corner; particles outside [lo, hi) leave the simulation
   Real inv_cell_x, inv_cell_y, inv_cell_z;  // 1/m
@@ -29,15 +32,20 @@ struct GridSpec {
     const Real ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
     int* dims[3] = {&g.nx, &g.ny, &g.nz};
     Real* inv[3] = {&g.inv_cell_x, &g.inv_cell_y, &g.inv_cell_z};
+    // Counted in double: a domain far larger than its cells gives counts beyond int, and a cast
+    // of such a count was undefined (it came out negative and bypassed the total's guard, so every
+    // particle was "outside" at t = 0). The scene's validation refuses such domains first, naming
+    // the key (scene_toml.cpp, check_sizes); this is the backstop for other callers.
     double cells = 1;
     for (int d = 0; d < 3; ++d) {
       if (!(ext[d] > 0)) throw std::invalid_argument("grid: domain hi must exceed lo in every axis");
-      const double count = static_cast<double>(ext[d] / min_cell);
+      const double count = std::floor(static_cast<double>(ext[d]) / static_cast<double>(min_cell));
+      if (!(count < 2147483647.0)) throw std::invalid_argument("grid: more than 2^31 cells along one axis; enlarge the cells or shrink the domain");
       *dims[d] = count < 1 ? 1 : static_cast<int>(count);
       *inv[d] = static_cast<Real>(*dims[d]) / ext[d];
       cells *= *dims[d];
     }
-    if (cells >= 4.0e9) throw std::invalid_argument("grid: more than 4e9 cells; enlarge the cells or shrink the domain");
+    if (!(cells < kMaxCells)) throw std::invalid_argument("grid: more than 4e9 cells; enlarge the cells or shrink the domain");
     return g;
   }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -129,6 +130,7 @@ struct Scene {
   double skin = 0.2;             // neighbour-list skin / largest bounding radius
   PairsKind pair_evaluation = PairsKind::automatic;  // auto: once for polyhedra, both sides for spheres
   bool force_dt = false;         // run even when dt exceeds the safe fraction of the critical step
+  bool force_long_run = false;   // run even when the estimated wall time exceeds kMaxWallTime (run_check.hpp)
   double max_impact_speed = 0;   // m/s, Hertz stiffness estimate (0: from the scene)
   std::uint64_t seed = 1;
   double dt_critical = 0;        // s, filled in by the parser (critical_step.hpp)
@@ -146,6 +148,22 @@ struct Scene {
   std::vector<WallSpec> walls;
   std::vector<CylinderSpec> cylinders;
   std::vector<StudyValue> study;
+  // "file:line" of the keys that derived sizes and run checks blame, by their --set name
+  // ("simulation.dt", "lattice[0].count", "output.csv_interval"); the command line for --set values.
+  std::map<std::string, std::string> where;
+  std::vector<std::string> notes;  // what validation found worth saying but not refusing; programs print them
+
+  // "file:line: [table]: key 'name'" for a key of `where` (the file alone when it was not recorded).
+  std::string place(const std::string& key) const {
+    const auto it = where.find(key);
+    const std::string at = it != where.end() ? it->second : path;
+    const auto dot = key.find('.'), bracket = key.find('[');
+    if (dot == std::string::npos) return at + ": key '" + key + "'";
+    const std::string table = key.substr(0, std::min(dot, bracket));
+    const std::string label = bracket < dot ? "[[" + table + "]] #" + std::to_string(std::stoi(key.substr(bracket + 1)) + 1)
+                                            : "[" + table + "]";
+    return at + ": " + label + ": key '" + key.substr(dot + 1) + "'";
+  }
 
   // A [study] value in [lo, hi] (unit for messages); missing or out of range: a SceneError
   // naming the file, line, key, value and the allowed range.

@@ -7,13 +7,17 @@
 // at most 1000 tries per particle, then a SceneError. After all placements, any overlap between
 // particles of different placements is an error naming both.
 #pragma once
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <unordered_map>
 #include "blaze/contact/polyhedron.hpp"
 #include "blaze/laws/standard_laws.hpp"
 #include "blaze/scene/critical_step.hpp"
+#include "blaze/scene/run_size.hpp"
+#include "blaze/scene/world_overlap.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "blaze/world/world.hpp"
 
@@ -111,6 +115,26 @@ class Occupancy {
   std::vector<double> radius_;
 };
 
+// Set-up of large scenes reports its progress on stderr (a 1e9-particle fill takes minutes): every
+// few seconds, from 1e6 particles on.
+class SetupProgress {
+ public:
+  explicit SetupProgress(double total) : total_(total), on_(total >= 1e6), last_(clock::now()) {}
+  void tick(double placed) {
+    if (!on_ || (static_cast<long>(placed) & 0xffff) != 0) return;
+    const auto now = clock::now();
+    if (std::chrono::duration<double>(now - last_).count() < 5) return;
+    last_ = now;
+    std::fprintf(stderr, "placing particles: %.3g of %.3g (%.0f%%)\n", placed, total_, 100 * placed / total_);
+  }
+
+ private:
+  using clock = std::chrono::steady_clock;
+  double total_;
+  bool on_;
+  clock::time_point last_;
+};
+
 inline Quat<double> random_orientation(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
   return normalized(Quat<double>{g(rng), g(rng), g(rng), g(rng)});
@@ -130,6 +154,11 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
   std::mt19937_64 rng(s.seed);
   ParticleState<Real> out;
   const double touch_slack = 1e-9 * r_max;  // lattices at exactly 2 r spacing touch, they do not overlap
+  WorldOverlapCheck world(s, touch_slack);
+  const double total = scene_particles(s);
+  out.reserve(static_cast<std::size_t>(total));
+  scene_detail::SetupProgress progress(total);
+  std::vector<Vec3<double>> vertices;
 
   auto add = [&](int type, const Vec3<double>& x, const Vec3<double>& v, bool orient, const std::string& where) {
     const ParticleTypeSpec& t = s.types[static_cast<std::size_t>(type)];
@@ -139,12 +168,18 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
                        origin[static_cast<std::size_t>(j)] + " at the start; move or shrink one of the placements");
     placed.add(x, t.size());
     origin.push_back(where);
+    progress.tick(static_cast<double>(origin.size()));
     const auto mat = static_cast<std::uint8_t>(t.material);
     const double rho = s.materials[static_cast<std::size_t>(t.material)].density;
+    vertices.clear();
     if (shapes == nullptr) {
+      world.check(x, t.size(), vertices, where);
       out.add_sphere(vec_cast<Real>(x), static_cast<Real>(t.radius), static_cast<Real>(rho), mat, vec_cast<Real>(v));
     } else {
       const Quat<double> q = orient && !t.is_sphere() ? scene_detail::random_orientation(rng) : Quat<double>::identity();
+      const PolyhedronData<Real>& data = shapes->type[type];
+      for (int k = 0; k < data.vertex_count; ++k) vertices.push_back(x + rotate(q, vec_cast<double>(data.vertex[k])));
+      world.check(x, t.size(), vertices, where);
       add_polyhedron(out, *shapes, type, vec_cast<Real>(x), Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)}, mat,
                      vec_cast<Real>(v));
     }
@@ -185,6 +220,7 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
       add(f.type, x, f.velocity, true, name);
     }
   }
+  world.finish();
   return out;
 }
 

@@ -1,0 +1,134 @@
+// Initial particle-world overlaps, checked at placement as particle-particle overlaps are
+// (scene_build.hpp): a particle that starts inside a wall, across a wall's plane, outside a drum,
+// or under a wall whose normal faces away from it is refused, naming the placement and the
+// object. Without the check such scenes ended in the energy guard, which blamed the time step.
+//
+// Geometry, in double, with the walls' own definitions (planar_polygon.hpp, cylinder.hpp):
+//   polygon, centre x, radius r:  d = (x - c) . n; with the foot point x - d n inside the polygon
+//     the particle overlaps when d < r (polyhedra: a vertex with (v - c) . n < 0), and lies across
+//     the wall when its centre is behind it (d <= 0) by less than its size; with the foot outside,
+//     an active rim edge closer than r overlaps (spheres);
+//   cylinder: with s = (x - a) . u in [0, L] and rho = |(x - a) - s u|, the particle overlaps when
+//     rho + r > R (polyhedra: a vertex beyond R), and is outside the drum when rho > R;
+//   a wall faces away when particles lie behind it within its outline, none in front, and gravity
+//     draws them towards its back (g . n > 0): they would fall into the side it does not act on.
+// Touching is allowed: an overlap up to `slack` (1e-9 of the largest size) is not one.
+#pragma once
+#include <cmath>
+#include <string>
+#include <vector>
+#include "blaze/scene/scene.hpp"
+#include "blaze/world/cylinder.hpp"
+#include "blaze/world/planar_polygon.hpp"
+
+namespace blaze {
+
+class WorldOverlapCheck {
+ public:
+  WorldOverlapCheck(const Scene& s, double slack) : s_(s), slack_(slack) {
+    for (const auto& w : s.walls) polygons_.push_back(PlanarPolygon<double>::make(w.vertices, 0, w.rim_edges));
+    for (const auto& c : s.cylinders) cylinders_.push_back(Cylinder<double>::make(c.origin, c.axis, c.radius, c.length, 0));
+    front_.assign(polygons_.size(), 0);
+    behind_.assign(polygons_.size(), 0);
+  }
+
+  // A particle of centre x and size r (bounding radius), with its vertices in the world frame
+  // (empty for a sphere); `who` names it for the message. Throws SceneError on an overlap.
+  void check(const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices, const std::string& who) {
+    for (std::size_t k = 0; k < polygons_.size(); ++k) check_polygon(k, x, r, vertices, who);
+    for (std::size_t k = 0; k < cylinders_.size(); ++k) check_cylinder(k, x, r, vertices, who);
+  }
+
+  // After every particle: walls that face away from all the particles over them.
+  void finish() const {
+    for (std::size_t k = 0; k < polygons_.size(); ++k) {
+      const Vec3<double> n = polygons_[k].normal;
+      if (behind_[k] > 0 && front_[k] == 0 && dot(s_.gravity, n) > 0)
+        throw SceneError(s_.place("wall[" + std::to_string(k) + "].vertices") + ": the wall faces away from the " +
+                         std::to_string(behind_[k]) + " particles over it (normal " + vec_text(n) +
+                         " by the right-hand rule of its vertex order, gravity draws them to its back, the side it does "
+                         "not act on); list its vertices in the opposite order");
+    }
+  }
+
+ private:
+  static std::string vec_text(const Vec3<double>& v) {
+    return "(" + Scene::shortest(v.x) + ", " + Scene::shortest(v.y) + ", " + Scene::shortest(v.z) + ")";
+  }
+  [[noreturn]] void fail(const std::string& who, const Vec3<double>& x, const std::string& object, const std::string& what) const {
+    throw SceneError(s_.path + ": " + who + " at " + vec_text(x) + " m " + what + " " + object +
+                     " at the start; move the placement or the object");
+  }
+
+  void check_polygon(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
+                     const std::string& who) {
+    const PlanarPolygon<double>& w = polygons_[k];
+    const std::string object = "[[wall]] #" + std::to_string(k + 1) + " (" + s_.place("wall[" + std::to_string(k) + "].vertices") + ")";
+    const double d = dot(x - w.centroid, w.normal);
+    const bool over = w.contains(x - d * w.normal);
+    if (over) (d > 0 ? front_[k] : behind_[k]) += 1;
+    if (over && d <= 0 && d > -r)
+      fail(who, x, object, "lies across the plane of, with its centre " + Scene::shortest(-d) +
+                               " m behind (the side the normal by the right-hand rule of the vertex order points away from),");
+    if (vertices.empty()) {
+      if (over && d > 0 && d < r - slack_) fail(who, x, object, "overlaps by " + Scene::shortest(r - d) + " m");
+      if (!over && std::fabs(d) < r) {
+        const double gap = rim_distance(w, x);
+        if (gap < r - slack_) fail(who, x, object, "overlaps the rim by " + Scene::shortest(r - gap) + " m");
+      }
+      return;
+    }
+    if (!(d > 0 && d < r)) return;
+    for (const auto& v : vertices) {
+      const double dv = dot(v - w.centroid, w.normal);
+      if (dv < -slack_ && w.contains(v - dv * w.normal))
+        fail(who, x, object, "has a vertex " + Scene::shortest(-dv) + " m deep in");
+    }
+  }
+
+  // Distance from x to the nearest active rim edge of w (infinite when none is active).
+  static double rim_distance(const PlanarPolygon<double>& w, const Vec3<double>& x) {
+    double best = INFINITY;
+    for (int e = 0; e < w.vertex_count; ++e) {
+      if (!((w.active_edges >> e) & 1u)) continue;
+      const Vec3<double> a = w.vertex[e], b = w.vertex[e + 1 < w.vertex_count ? e + 1 : 0], ab = b - a;
+      const double t = std::fmin(1.0, std::fmax(0.0, dot(x - a, ab) / norm2(ab)));
+      best = std::fmin(best, norm(x - (a + t * ab)));
+    }
+    return best;
+  }
+
+  void check_cylinder(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
+                      const std::string& who) const {
+    const Cylinder<double>& c = cylinders_[k];
+    const std::string object = "[[cylinder]] #" + std::to_string(k + 1) + " (" +
+                               s_.place("cylinder[" + std::to_string(k) + "].radius") + " = " + Scene::shortest(c.radius) + " m)";
+    const auto radial = [&](const Vec3<double>& p, double& s) {
+      s = dot(p - c.origin, c.axis);
+      return norm(p - c.origin - s * c.axis);
+    };
+    double s = 0;
+    const double rho = radial(x, s);
+    if (!(s >= 0 && s <= c.length)) return;
+    if (r >= c.radius) fail(who, x, object, "is wider (size " + Scene::shortest(r) + " m) than");
+    if (rho > c.radius) fail(who, x, object, "is outside (" + Scene::shortest(rho) + " m from the axis; particles live inside)");
+    if (vertices.empty()) {
+      if (rho + r > c.radius + slack_) fail(who, x, object, "overlaps by " + Scene::shortest(rho + r - c.radius) + " m");
+      return;
+    }
+    for (const auto& v : vertices) {
+      double sv = 0;
+      const double rv = radial(v, sv);
+      if (sv >= 0 && sv <= c.length && rv > c.radius + slack_)
+        fail(who, x, object, "has a vertex " + Scene::shortest(rv - c.radius) + " m deep in");
+    }
+  }
+
+  const Scene& s_;
+  double slack_;
+  std::vector<PlanarPolygon<double>> polygons_;
+  std::vector<Cylinder<double>> cylinders_;
+  std::vector<long> front_, behind_;
+};
+
+}  // namespace blaze
