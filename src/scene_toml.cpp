@@ -83,9 +83,19 @@ struct Range {
     return os.str();
   }
 };
-Range positive(const char* unit) { return {0, kInf, true, false, unit}; }
 Range non_negative(const char* unit) { return {0, kInf, false, false, unit}; }
-Range any(const char* unit) { return {-kInf, kInf, false, false, unit}; }
+// Physical inputs are bounded far beyond any granular scene, so that no derived quantity (a mass
+// r^3 rho, an energy m v^2, a stiffness estimate) can overflow a double and reach the run as inf
+// or NaN (issue 17: a gravity of 1e300 gave |g| = inf and an impact speed of NaN that no check saw).
+constexpr double kMaxCoordinate = 1e9;   // m
+constexpr double kMaxSpeed = 1e5;        // m/s
+constexpr double kMaxGravity = 1e7;      // m/s^2 (a centrifuge reaches 1e6)
+constexpr double kMaxSize = 1e3;         // m, a particle's radius
+constexpr double kMaxDensity = 1e9;      // kg/m^3 (density scaling reaches 1e3 x that of steel)
+constexpr double kMaxModulus = 1e15;     // Pa and N/m
+Range position(const char* unit) { return {-kMaxCoordinate, kMaxCoordinate, false, false, unit}; }
+Range speed() { return {-kMaxSpeed, kMaxSpeed, false, false, "m/s"}; }
+Range up_to(double hi, const char* unit) { return {0, hi, true, false, unit}; }
 
 // One TOML table being read. Keys not in `keys` are errors, found before any value is read (a
 // misspelt key must not leave a default in place, nor surface as "missing" under its real name).
@@ -274,7 +284,7 @@ bool is_index(const std::string& part) { return !part.empty() && std::isdigit(st
 
 void apply_override(toml::table& root, const std::string& arg) {
   const auto eq = arg.find('=');
-  const std::string usage = "--set " + arg + ": expected key=value, for example --set simulation.dt=1e-5";
+  const std::string usage = "command line --set " + arg + ": expected key=value, for example --set simulation.dt=1e-5";
   if (eq == std::string::npos || eq == 0 || eq + 1 == arg.size()) throw SceneError(usage);
   const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
   // One value on one line: a newline would end the value and start another TOML key (silently
@@ -389,13 +399,13 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
     if (f.has("dt")) f.fail(*f.get("dt"), "dt", both);
     f.missing("dt", both);
   }
-  s.dt = f.number_or("dt", 0, positive("s"));
+  s.dt = f.number_or("dt", 0, up_to(1e3, "s"));
   s.steps_per_contact = f.number_or("steps_per_contact", 0, {5, 1e6, false, false, "steps per contact time"});
-  s.end_time = f.number("end_time", positive("s"));
-  s.gravity = f.vec3_or("gravity", {0, -9.81, 0}, any("m/s^2"));
-  s.drag = f.number_or("drag", 0, non_negative("kg/m"));
-  s.domain_lo = f.vec3("domain_lo", any("m"));
-  s.domain_hi = f.vec3("domain_hi", any("m"));
+  s.end_time = f.number("end_time", up_to(1e15, "s"));
+  s.gravity = f.vec3_or("gravity", {0, -9.81, 0}, {-kMaxGravity, kMaxGravity, false, false, "m/s^2"});
+  s.drag = f.number_or("drag", 0, {0, 1e9, false, false, "kg/m"});
+  s.domain_lo = f.vec3("domain_lo", position("m"));
+  s.domain_hi = f.vec3("domain_hi", position("m"));
   if (!(s.domain_hi.x > s.domain_lo.x && s.domain_hi.y > s.domain_lo.y && s.domain_hi.z > s.domain_lo.z))
     f.fail(*f.get("domain_hi"), "domain_hi", "must exceed domain_lo in x, y and z");
   s.skin = f.number_or("skin", 0.2, {0, 10, false, false, "x largest bounding radius"});
@@ -438,17 +448,18 @@ void read_materials(const toml::table& root, const std::string& file, Scene& s) 
     m.name = f.string("name", "a non-empty name");
     for (const auto& o : s.materials)
       if (o.name == m.name) f.fail(*f.get("name"), "name", "must be unique among [[material]]");
-    m.density = f.number("density", positive("kg/m^3"));
+    m.density = f.number("density", up_to(kMaxDensity, "kg/m^3"));
     if (s.law == LawKind::hertz) {
-      m.youngs_modulus = f.number("youngs_modulus", positive("Pa"));
+      m.youngs_modulus = f.number("youngs_modulus", up_to(kMaxModulus, "Pa"));
       m.poisson_ratio = f.number("poisson_ratio", {-1, 0.5, true, true, "(Poisson ratio)"});
     } else {
-      m.youngs_modulus = f.number_or("youngs_modulus", 0, positive("Pa"));
+      m.youngs_modulus = f.number_or("youngs_modulus", 0, up_to(kMaxModulus, "Pa"));
       m.poisson_ratio = f.number_or("poisson_ratio", 0, {-1, 0.5, true, true, "(Poisson ratio)"});
     }
     s.materials.push_back(m);
   }
-  if (s.materials.size() > 8) throw SceneError(file + ": at most 8 [[material]] (the contact-law table's size)");
+  if (s.materials.size() > 8)
+    throw SceneError(s.place("material[8].name") + ": a 9th [[material]]; at most 8 (the contact-law table's size)");
   if (s.materials.empty()) throw SceneError(file + ": no [[material]]: at least one is needed");
 }
 
@@ -488,8 +499,8 @@ void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
         if (f.has("stiffness")) f.fail(*f.get("stiffness"), "stiffness", one);
         f.missing("stiffness", one);
       }
-      p.stiffness = f.number_or("stiffness", 0, positive("N/m"));
-      p.contact_time = f.number_or("contact_time", 0, positive("s"));
+      p.stiffness = f.number_or("stiffness", 0, up_to(kMaxModulus, "N/m"));
+      p.contact_time = f.number_or("contact_time", 0, up_to(1e3, "s"));
     }
     p.restitution = f.number("restitution", {0, 1, true, false, "(coefficient of restitution)"});
     p.friction = f.number_or("friction", 0, {0, 100, false, false, "(Coulomb coefficient)"});
@@ -515,11 +526,11 @@ void read_types(const toml::table& root, const std::string& file, Scene& s) {
       f.missing("radius", one);
     }
     if (f.has("radius")) {
-      t.radius = f.number("radius", positive("m"));
+      t.radius = f.number("radius", up_to(kMaxSize, "m"));
       t.volume = 4.0 / 3.0 * 3.14159265358979323846 * t.radius * t.radius * t.radius;
     } else {
       t.shape = f.string("shape", "a path to a .shape or .obj file");
-      t.bounding_radius = f.number("bounding_radius", positive("m"));
+      t.bounding_radius = f.number("bounding_radius", up_to(kMaxSize, "m"));
       try {
         t.volume = load_scaled_shape(t.shape, t.bounding_radius).volume;
       } catch (const std::exception& e) {
@@ -554,7 +565,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
     LatticeSpec l;
     l.type = lookup(f, "type", types, "particle_type");
     const double r = s.types[static_cast<std::size_t>(l.type)].size();
-    l.origin = f.vec3("origin", any("m"));
+    l.origin = f.vec3("origin", position("m"));
     const toml::node* c = f.get("count");
     const std::string allowed = "[nx, ny, nz], integers >= 1";
     if (!c) f.missing("count", allowed);
@@ -569,7 +580,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
     }
     if (sites > static_cast<double>(kMaxParticles)) f.fail(*c, "count", "at most 2^31 - 1 sites");
     l.spacing = f.number("spacing", {2 * r, kInf, false, false, "m (at least 2 bounding radii: no overlap)"});
-    l.velocity = f.vec3_or("velocity", {0, 0, 0}, any("m/s"));
+    l.velocity = f.vec3_or("velocity", {0, 0, 0}, speed());
     l.jitter = f.number_or("jitter", 0, {0, 1, false, false, "x the free gap between neighbours"});
     l.random_orientation = f.boolean_or("random_orientation", true);
     const Vec3<double> last = l.origin + Vec3<double>{double(l.count[0] - 1), double(l.count[1] - 1), double(l.count[2] - 1)} * l.spacing;
@@ -585,9 +596,9 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
     ListSpec l;
     l.type = lookup(f, "type", types, "particle_type");
     const double r = s.types[static_cast<std::size_t>(l.type)].size();
-    l.position = f.vec3_list("positions", any("m"), 1, 1000000);
+    l.position = f.vec3_list("positions", position("m"), 1, 1000000);
     if (f.has("velocities")) {
-      l.velocity = f.vec3_list("velocities", any("m/s"), l.position.size(), l.position.size());
+      l.velocity = f.vec3_list("velocities", speed(), l.position.size(), l.position.size());
     }
     for (std::size_t i = 0; i < l.position.size(); ++i)
       if (!inside_domain(s, l.position[i], r))
@@ -602,8 +613,8 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
     FillSpec l;
     l.type = lookup(f, "type", types, "particle_type");
     const double r = s.types[static_cast<std::size_t>(l.type)].size();
-    l.lo = f.vec3("lo", any("m"));
-    l.hi = f.vec3("hi", any("m"));
+    l.lo = f.vec3("lo", position("m"));
+    l.hi = f.vec3("hi", position("m"));
     const Vec3<double> span = l.hi - l.lo;
     if (!(span.x > 2 * r && span.y > 2 * r && span.z > 2 * r)) f.fail(*f.get("hi"), "hi", "the box must exceed lo by more than a diameter in x, y and z");
     if (!inside_domain(s, l.lo, 0) || !inside_domain(s, l.hi, 0)) f.fail(*f.get("hi"), "hi", "the box must lie inside the domain");
@@ -613,7 +624,7 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
     if (fraction > 0.3)
       f.fail(*f.get("count"), "count", "fills " + std::to_string(fraction) + " of the box by bounding volume; random placement jams "
              "near 0.38, so at most 0.3 is allowed (use a larger box or a [[lattice]])");
-    l.velocity = f.vec3_or("velocity", {0, 0, 0}, any("m/s"));
+    l.velocity = f.vec3_or("velocity", {0, 0, 0}, speed());
     total += l.count;
     f.note(s, "fill[" + std::to_string(k) + "].", {"count", "lo", "hi", "velocity"});
     s.fills.push_back(l);
@@ -629,7 +640,7 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
     WallSpec w;
     w.name = f.string_or("name", "", "a non-empty name");
     w.material = lookup(f, "material", materials, "material");
-    w.vertices = f.vec3_list("vertices", any("m"), 3, PlanarPolygon<double>::kMaxVertices);
+    w.vertices = f.vec3_list("vertices", position("m"), 3, PlanarPolygon<double>::kMaxVertices);
     try {
       (void)PlanarPolygon<double>::make(w.vertices, 0);
     } catch (const std::exception& e) {
@@ -659,11 +670,11 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
     Fields f(*cylinders[k], item_label("cylinder", k), file, {"material", "origin", "axis", "radius", "length"});
     CylinderSpec c;
     c.material = lookup(f, "material", materials, "material");
-    c.origin = f.vec3("origin", any("m"));
-    c.axis = f.vec3("axis", any("(direction)"));
+    c.origin = f.vec3("origin", position("m"));
+    c.axis = f.vec3("axis", {-1e9, 1e9, false, false, "(direction)"});
     if (!(norm(c.axis) > 0)) f.fail(*f.get("axis"), "axis", "a non-zero direction");
-    c.radius = f.number("radius", positive("m"));
-    c.length = f.number("length", positive("m"));
+    c.radius = f.number("radius", up_to(kMaxCoordinate, "m"));
+    c.length = f.number("length", up_to(kMaxCoordinate, "m"));
     s.cylinders.push_back(c);
   }
 }
@@ -695,7 +706,7 @@ void check_time_step(const toml::table& sim, const std::string& file, Scene& s) 
   s.impact_speed = c.impact_speed;
   s.overlap_governing = c.overlap_governing;
   if (s.steps_per_contact > 0) s.dt = c.contact_time / s.steps_per_contact;
-  if (s.impact_overlap > kMaxImpactOverlap && !s.force_dt) {
+  if (!(s.impact_overlap <= kMaxImpactOverlap) && !s.force_dt) {
     std::ostringstream msg;
     msg.precision(3);
     msg << ": an impact at " << c.impact_speed << " m/s (" << (s.max_impact_speed > 0 ? "max_impact_speed" : "the default: "
@@ -704,7 +715,12 @@ void check_time_step(const toml::table& sim, const std::string& file, Scene& s) 
         << "Raise the stiffness, lower max_impact_speed if no impact is that fast, or set force_dt = true";
     if (const toml::node* v = sim.get("max_impact_speed"))
       throw SceneError(where(v->source(), file) + ": [simulation]: key 'max_impact_speed' = " + shown(*v) + msg.str());
-    throw SceneError(where(sim.source(), file) + ": [simulation]" + msg.str());
+    // The stiffness of the pairing is what to raise: its [[pair]] (linear) or its materials' modulus (Hertz).
+    std::size_t k = 0;
+    while (k < s.pairs.size() && !(s.pairs[k].a == c.overlap_a && s.pairs[k].b == c.overlap_b)) ++k;
+    const std::string key = s.law == LawKind::hertz ? "material[" + std::to_string(c.overlap_a) + "].youngs_modulus"
+                            : "pair[" + std::to_string(k) + "]." + (s.pairs[k].stiffness > 0 ? "stiffness" : "contact_time");
+    throw SceneError(s.place(key) + msg.str());
   }
   if (s.dt <= kSafeStepFraction * s.dt_critical || s.force_dt) return;
   Fields f(sim, "[simulation]", file);
@@ -764,6 +780,13 @@ void check_sizes(Scene& s) {
   if (s.end_time < s.dt)
     throw SceneError(s.place("simulation.end_time") + " = " + Scene::shortest(s.end_time) + ": shorter than one time step (dt = " +
                      Scene::shortest(s.dt) + " s); give end_time >= dt");
+  const std::pair<const char*, double> intervals[] = {{"output.csv_interval", s.output.csv_interval},
+                                                      {"output.vtu_interval", s.output.vtu_interval},
+                                                      {"output.checkpoint_interval", s.output.checkpoint_interval}};
+  for (const auto& [key, interval] : intervals)
+    if (interval > 0 && interval < s.dt * (1 - 1e-9))
+      throw SceneError(s.place(key) + " = " + Scene::shortest(interval) + ": shorter than one time step (dt = " +
+                       Scene::shortest(s.dt) + " s); give at least dt (output every step) or 0 (none)");
   if (!(z.steps <= kMaxSteps))
     throw SceneError(s.place(dt_key) + ": end_time / dt = " + Scene::shortest(s.end_time) + " s / " + Scene::shortest(s.dt) +
                      " s = " + Scene::shortest(z.steps) + " steps; at most " + Scene::shortest(kMaxSteps) +
@@ -782,6 +805,22 @@ void check_impact_speed(const toml::table& sim, const std::string& file, const S
          "below the initial speed " + Scene::shortest(v0) + " m/s of " + s.place(key) +
              "; a particle faster than max_impact_speed overlaps more than estimated and can tunnel through a wall: "
              "give at least " + Scene::shortest(v0) + " m/s (or leave it out: the default covers every initial speed)");
+}
+
+// Quadratic drag F = -drag |v| v slows a particle at the rate drag |v| / m; the explicit step
+// overshoots (reverses the velocity) once that rate times dt nears 1. Refused above 0.5 at the
+// impact speed for the lightest particle type.
+void check_drag(const toml::table& sim, const std::string& file, const Scene& s) {
+  if (!(s.drag > 0)) return;
+  double m_min = INFINITY;
+  for (const auto& t : s.types) m_min = std::min(m_min, s.materials[static_cast<std::size_t>(t.material)].density * t.volume);
+  const double rate_dt = s.drag * s.impact_speed * s.dt / m_min;
+  if (rate_dt <= 0.5) return;
+  Fields f(sim, "[simulation]", file);
+  f.fail(*f.get("drag"), "drag",
+         "slows the lightest particle at " + Scene::shortest(rate_dt) + " of its speed per step at " +
+             Scene::shortest(s.impact_speed) + " m/s (dt = " + Scene::shortest(s.dt) +
+             " s); above 0.5 the explicit step overshoots. Lower drag or dt");
 }
 
 // Float resolution far from the origin: positions are held to ulp(|x|) (2^-23 |x| in float), and a
@@ -840,6 +879,7 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
   check_pairs_complete(root, file, s);
   check_time_step(table(root, "simulation", file), file, s);
   check_impact_speed(table(root, "simulation", file), file, s);
+  check_drag(table(root, "simulation", file), file, s);
   check_sizes(s);
   check_resolution(s);
   return s;

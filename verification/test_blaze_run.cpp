@@ -78,7 +78,8 @@ BOOST_AUTO_TEST_CASE(restart_rewrites_the_same_time_series) {
   const Result other = run(common + "--set output.directory=" + b.string() + " --set dt=5e-6 --restart " +
                            (a / "checkpoint.blz").string());
   BOOST_TEST(other.status == 1);
-  BOOST_TEST(other.output.find("written by another run") != std::string::npos, other.output);
+  BOOST_TEST(other.output.find("cannot continue this scene") != std::string::npos, other.output);
+  BOOST_TEST(other.output.find("key 'dt'") != std::string::npos, other.output);
   fs::remove_all(a);
   fs::remove_all(b);
 }

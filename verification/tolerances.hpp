@@ -324,4 +324,12 @@ constexpr double packing_energy_gain = 1e-6;
 // Mutated scenes in the parser fuzz: the issue's 10^4 (each parse takes ~0.1 ms).
 constexpr int scene_fuzz_mutations = 10000;
 
+// --- the adversarial suite (issue 17) ---
+// Wall-time limit of one adversarial scene: each is validated in milliseconds or runs at most 100
+// steps of a few dozen particles (~0.1 s); 20 s leaves room for a loaded 2-core CI machine and the
+// sanitizer build (~10x slower), and is far below what a hang would take.
+constexpr double adversarial_case_seconds = 20;
+// A long run is killed after this long: enough for it to have printed its banner (milliseconds).
+constexpr double killed_run_seconds = 2;
+
 }  // namespace blaze::tol

@@ -263,9 +263,9 @@ int main(int argc, char** argv) try {
   const Scene s = load_scene(o.scene, o.overrides);
   const bool gpu_build = std::string(DefaultSpace::name) == "gpu";
   if (s.backend == BackendKind::gpu && !gpu_build)
-    throw SceneError(s.path + ": backend = \"gpu\", but this is the CPU build (build/cpu/blaze); run build/cuda/blaze");
+    throw SceneError(s.place("simulation.backend") + " = \"gpu\": this is the CPU build (build/cpu/blaze); run build/cuda/blaze");
   if (s.backend == BackendKind::cpu && gpu_build)
-    throw SceneError(s.path + ": backend = \"cpu\", but this is the GPU build (build/cuda/blaze); run build/cpu/blaze");
+    throw SceneError(s.place("simulation.backend") + " = \"cpu\": this is the GPU build (build/cuda/blaze); run build/cpu/blaze");
   std::printf("blaze: %s, %s law, %s, %s (%s)\n", s.path.c_str(), to_string(s.law), to_string(s.precision),
               DefaultSpace::name, device_name(DefaultSpace{}).c_str());
   std::printf("dt = %.4g s = %.3f of the critical step %.4g s (%s)%s\n", s.dt, s.dt / s.dt_critical, s.dt_critical,
@@ -288,7 +288,10 @@ int main(int argc, char** argv) try {
   const double seconds = estimated_seconds(size, gpu_build, host_threads());
   std::printf("; at least %.3g s of wall time\n", seconds);
   check_run_fits(s, size, gpu_build, host_free > 0 ? host_free : INFINITY, device_free, host_threads());
-  if (o.check) return 0;
+  if (o.check) {
+    std::printf("placements: %zu particles, none overlapping another or a world object\n", check_placements(s));
+    return 0;
+  }
   return s.precision == PrecisionKind::float32 ? run_precision<float>(s, o) : run_precision<double>(s, o);
 } catch (const SceneError& e) {
   std::fprintf(stderr, "blaze: scene rejected: %s\n", e.what());

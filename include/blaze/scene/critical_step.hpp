@@ -107,6 +107,7 @@ struct CriticalStep {
   double impact_speed = 0;  // m/s, of the Hertz and overlap estimates
   double impact_overlap = 0;  // deepest elastic impact overlap / smaller radius
   std::string overlap_governing;
+  int overlap_a = -1, overlap_b = -1;  // the materials of that pairing
 };
 
 // Deepest elastic overlap (m) of a head-on impact at v between effective mass m*, radius r*.
@@ -161,7 +162,8 @@ inline CriticalStep critical_step(const Scene& s) {
     auto check = [&](const PairSpec* spec, double e_star, double m_eff, double r_eff, double r_min, const std::string& name) {
       if (!spec) return;
       const double ratio = impact_overlap(s, *spec, e_star, m_eff, r_eff, c.impact_speed) / r_min;
-      if (ratio > c.impact_overlap) c.impact_overlap = ratio, c.overlap_governing = name;
+      if (ratio > c.impact_overlap || !(ratio == ratio))
+        c.impact_overlap = ratio, c.overlap_governing = name, c.overlap_a = spec->a, c.overlap_b = spec->b;
     };
     for (std::size_t j = i; j < s.types.size(); ++j) {
       const ParticleTypeSpec& tj = s.types[j];

@@ -224,4 +224,13 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
   return out;
 }
 
+// The placements checked without a run (blaze run --check): built in double on the host, which
+// checks every particle-particle and particle-world overlap, and discarded.
+inline std::size_t check_placements(const Scene& s) {
+  if (s.all_spheres()) return build_particles<double>(s, nullptr).size();
+  const std::vector<ConvexShape> shapes = build_shapes(s);
+  const PolyhedronTable<double> table = build_shape_table<double>(s, shapes);
+  return build_particles<double>(s, &table).size();
+}
+
 }  // namespace blaze

@@ -85,7 +85,8 @@ class RunLog {
     if (scale_ > 0 && gain > gain_limit_ * scale_) {
       char msg[320];
       std::snprintf(msg, sizeof msg, "t = %.6g s (step %llu): the energy rose %.3g J above its initial value, %.3g of "
-                    "the scale %.3g J (limit %.3g); nothing feeds energy in, so the time step is unstable",
+                    "the scale %.3g J (limit %.3g, [output] energy_gain_limit); nothing feeds energy in, so the time step is "
+                    "unstable",
                     sim.time(), static_cast<unsigned long long>(sim.steps()), gain, gain / scale_, scale_, gain_limit_);
       throw EnergyGain(msg);
     }
