@@ -278,6 +278,26 @@ BOOST_AUTO_TEST_CASE(contact_energy_matches_a_brute_force_sum) {
   BOOST_TEST(e.wall_contacts == touching);
 }
 
+#if BLAZE_DEVICE_CODE
+// The same overlapping packing on both backends: the stored energies agree to the ulps in which
+// the GPU's fused multiply-adds differ, the wall contacts exactly.
+BOOST_AUTO_TEST_CASE(contact_energy_cpu_and_gpu_agree) {
+  using Law = ContactLaw<double, Hertz, NoFriction>;
+  const auto laws = one_law(Law{Hertz<double>::from_modulus(5e7, 0), {}}, 3);
+  const auto s = random_spheres<double>(2000, 1e-3, 3e-3, 0.038, 12);
+  World<double> w = closed_box<double>(0.02, 2);
+  w.cylinders.push_back(Cylinder<double>::make({0, 0, -0.02}, {0, 0, 1}, 0.019, 0.04, 2));
+  Simulation<Host, SphereShape, Law, VelocityVerlet> cpu(params<double>(1e-7, {0, 0, 0}, 0.03, 1e-3), laws, w, s);
+  Simulation<Cuda, SphereShape, Law, VelocityVerlet> gpu(params<double>(1e-7, {0, 0, 0}, 0.03, 1e-3), laws, w, s);
+  const ContactEnergy a = cpu.contact_energy(), b = gpu.contact_energy();
+  check_relative({kCase, "contact_energy() pairs, GPU vs CPU, 2000 spheres", "-", "same double arithmetic"}, b.pairs, a.pairs,
+                 tol::cpu_gpu_contact_energy);
+  check_relative({kCase, "contact_energy() walls, GPU vs CPU", "-", "same double arithmetic"}, b.walls, a.walls,
+                 tol::cpu_gpu_contact_energy);
+  BOOST_TEST(a.wall_contacts == b.wall_contacts);
+}
+#endif
+
 BOOST_DATA_TEST_CASE(elastic_box_balances, boost::unit_test::data::make(kBoxes), c) {
   const BoxOutcome o = c.hertz ? elastic_box<Hertz>(c) : elastic_box<LinearSpringDashpot>(c);
   BOOST_TEST_MESSAGE("elastic box, " << c.name << ": omega dt " << o.omega_dt << ", max |dissipated| / scale " << o.with
