@@ -10,7 +10,8 @@
 //   rest height of the centre of mass  y_rest = h - delta_s,  h = half edge = 1.443 mm,
 // with K_n exact for this contact (Hertz::from_stiffness with r_ref = the cube's bounding radius,
 // the r_eff of a polyhedron-wall contact). The damping force vanishes at rest, so the rest state
-// is a fixed point of the integrator whatever dt: y_rest is exact up to rounding.
+// is a fixed point of the integrator whatever dt: y_rest is exact up to rounding. The contact
+// then stores (2/5) K_n delta_s^(5/2) = (2/5) m g delta_s (hertz.hpp).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <random>
@@ -74,6 +75,15 @@ BOOST_AUTO_TEST_CASE(cube_dropped_on_face_settles_at_static_penetration) {
   check_at_most({"Cube dropped on its face (3.3.1.3, Figs 3.14-3.15)", "|v| + |w| R after settling (m/s), double", "qualitative",
                  "rest"},
                 speed, tol::rest_speed_double);
+  // The energy the resting contact stores (Simulation::contact_energy(), the polyhedron path):
+  // (2/5) K_n delta_s^(5/2) = (2/5) m g delta_s, in the one wall contact.
+  const ContactEnergy stored = sim.contact_energy();
+  BOOST_TEST(stored.wall_contacts == 1);
+  BOOST_TEST(stored.pairs == 0.0);
+  check_relative({"Cube dropped on its face (3.3.1.3, Figs 3.14-3.15)",
+                  "stored elastic energy at rest vs (2/5) m g delta_s, double, dt = 2e-7 s", "-",
+                  "U = (2/5) K_n delta^(5/2), K_n delta_s^(3/2) = m g"},
+                 stored.walls, 0.4 * m * g * delta_s, 2.5 * tol::cube_rest_penetration);
 }
 
 // The rest state above rests on the polyhedron-wall contact point. The overlap is the deepest

@@ -317,10 +317,43 @@ constexpr double static_overlap_monitor = 1e-9;
 // ~ 2-4%; 10% leaves room without hiding a tunnelling particle (that would exceed 100%).
 constexpr double impact_overlap_margin = 0.1;
 // A packing with dissipation only can never gain energy; what the check can see is rounding: the
-// energies are summed in double from float positions (relative 6e-8 per term) and the elastic
-// energy held in contacts is not counted (it only lowers E). 1e-6 of the bed's potential energy
+// energies are summed in double from float positions (relative 6e-8 per term). 1e-6 of the bed's potential energy
 // is far above that rounding and far below the 5% an unstable step reaches within a few steps.
 constexpr double packing_energy_gain = 1e-6;
+// --- energy balance (issue 17, item 8; test_energy_balance.cpp) ---
+// Velocity Verlet on a contact of angular frequency omega conserves not H but the shadow energy
+// H~ = H - (omega dt)^2 / 4 U (U the spring's energy; exact for the linear spring: the invariant
+// 1/2 v^2 + 1/2 omega^2 x^2 (1 - (omega dt)^2 / 4) of the harmonic oscillator), so while contacts
+// are open E(t) - E(0) wobbles by up to (omega dt)^2 / 4 of the stored energy, itself <= the
+// scale (E_kin(0) + E_el(0) + sum m g h). The linear law's kink at touch and at separation adds
+// per event at most K_n v s (dt - s) / 2 <= (omega dt)^2 / 4 of that contact's normal kinetic
+// energy, of either sign, adding up like a random walk over a run's contacts. omega is the
+// fastest contact's (pair, m_eff = m/2, at the deepest overlap seen: Hertz stiffens). The bound
+// is one contact's, (omega dt)^2 / 4 of the scale: measured 0.004-0.05 (omega dt)^2 over the
+// swept elastic boxes (8-64 spheres, t_c/25-t_c/100, both laws, gravity on and off; 2026-12),
+// so 5x margin; the same runs without elastic_J miss by the stored energy itself, 0.04-0.2 of
+// the scale, 14-105x the bound.
+constexpr double energy_balance_wobble = 0.25;  // x (omega dt)^2 of the scale
+// The stored energies against Simpson's rule over the elastic force at 2000 intervals: exact for
+// the linear force; for Hertz's delta^(3/2) the error is O(h^(5/2)) near delta = 0, (5e-4)^2.5 =
+// 6e-9 relative.
+constexpr double stored_energy_integral = 1e-7;
+// contact_energy() against a host sum with the same collide() and the same law: the two differ
+// only in summation order (~400 terms of one sign, a few ulps each).
+constexpr double stored_energy_sum = 1e-12;
+// Spheres at rest on a floor (a column of 5, or 9 apart) against the static closed forms: velocity
+// Verlet's fixed point is the exact static equilibrium (no dt error at rest); what is left is
+// the residual motion after 28 decay times of the slowest mode (kinetic energy 1e-25 J) and the
+// CSV's 10 digits (5e-10 of each value); measured 1e-10 to 3e-10 (2026-12).
+constexpr double resting_column = 1e-6;
+// contact_energy() on the GPU against the CPU, same state: the same double expressions, which the
+// GPU contracts into fused multiply-adds (a few ulps of each of ~1e4 terms of one sign).
+constexpr double cpu_gpu_contact_energy = 1e-12;
+// The time series' columns are written to 10 significant digits, each rounded by up to 5e-10
+// of itself (a value with leading digit 1), so kinetic + potential + elastic - total and
+// E(0) - total - dissipated (five values, each <= the scale) come out at up to 2.5e-9 of the
+// scale; measured up to 3e-10 (blaze run box_fill.toml).
+constexpr double csv_balance = 3e-9;
 // Mutated scenes in the parser fuzz: the issue's 10^4 (each parse takes ~0.1 ms).
 constexpr int scene_fuzz_mutations = 10000;
 

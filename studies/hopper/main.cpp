@@ -80,7 +80,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   std::filesystem::create_directories("plots");
   std::ofstream csv(dir + "/timeseries.csv");
   csv << "t_s,discharged_mass_kg,discharged_count,particles_in_hopper,kinetic_translational_J,kinetic_rotational_J,"
-         "potential_J,max_penetration_ratio\n";
+         "potential_J,max_penetration_ratio,elastic_J,contacts_wall\n";
   PvdCollection pvd(dir + "/particles.pvd");
   write_world_vtu(dir + "/walls.vtu", without_gate(s));
   int frame = 0;
@@ -104,10 +104,12 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
         if (csv_due) {
           const auto en = energies(st, sp.gravity);
           const PenetrationReport pen = sim.take_penetration(s.output.penetration_warning);
+          const ContactEnergy stored = sim.contact_energy();
           over_limit += pen.over;
           worst_penetration = std::max(worst_penetration, static_cast<double>(pen.worst));
           csv << t << ',' << sim.removed_mass() << ',' << removed_before + sim.removed_count() << ',' << st.size() << ','
-              << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << '\n';
+              << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << ','
+              << stored.total() << ',' << stored.wall_contacts << '\n';
         }
         if (vtu_due) {
           char name[64];

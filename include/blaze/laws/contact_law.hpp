@@ -22,6 +22,13 @@ struct ContactLaw {
     const Vec3<Real> v_t = v_rel - v_n * g.normal;
     return g.normal * (-f_n) + tangential.tangential_force(v_t, f_n);
   }
+
+  // Elastic energy the contact holds (J, double): the normal spring's potential
+  // (NormalLaw::stored_energy, equation in its header). The tangential laws Blaze ships are
+  // history-free (no spring, nothing stored); a tangential spring (the contact-history issue)
+  // adds its 1/2 k_t |s|^2 here, and a rolling spring its 1/2 k_r |theta|^2, from the contact's
+  // history: this is the one place Simulation::contact_energy() and the time series read.
+  BLAZE_HD double stored_energy(const ContactGeometry<Real>& g) const { return normal.stored_energy(g.overlap, g.r_eff); }
 };
 
 // Laws per material pair, symmetric, with a compile-time cap so the table fits in a kernel's

@@ -18,6 +18,12 @@
 // Elastic head-on impact at speed v:
 //   delta_max = (5 m_eff v^2 / (4 K_n))^(2/5),  t_c = (4/5) B(2/5, 1/2) delta_max / v = 2.9432 delta_max / v,
 //   F_max = K_n delta_max^(3/2).
+// Stored elastic energy (J), the integral of K_n delta^(3/2) d(delta) (Johnson, Contact
+// Mechanics, 1985, section 4.2: the Hertzian potential):
+//   U = (2/5) K_n delta^(5/2) = (2/5) k_hat sqrt(R*) delta^(5/2)      (k_hat = (4/3) E*, Pa)
+// With no_tension it is still the spring's: the clamp only removes the part of the dashpots'
+// pull that exceeds the spring near separation, a force against the opening speed that only
+// dissipates (linear_spring_dashpot.hpp gives the argument); dissipated_J carries it.
 #pragma once
 #include <cmath>
 #include <stdexcept>
@@ -66,6 +72,13 @@ struct Hertz {
     if (eta != Real(0)) damping += eta * sqrt_r(m_eff * k_n * sd);
     const Real f = k_n * delta * sd + damping * v_n;
     return no_tension ? max_r(f, Real(0)) : f;
+  }
+  // Stored elastic energy (2/5) k_hat sqrt(R*) delta^(5/2) (J), in double whatever Real; 0 at
+  // delta <= 0.
+  BLAZE_HD double stored_energy(Real delta, Real r_eff) const {
+    if (!(delta > Real(0))) return 0;
+    const double d = static_cast<double>(delta);
+    return 0.4 * static_cast<double>(k_hat) * sqrt_r(static_cast<double>(r_eff)) * d * d * sqrt_r(d);
   }
   // dF/d(delta) (N/m), for the critical time step.
   Real stiffness(Real delta, Real r_eff) const { return Real(1.5) * k_hat * std::sqrt(r_eff * delta); }

@@ -12,6 +12,15 @@
 // no_tension clamps F_n at 0 (the dashpot pulls near separation; a clamped contact does not, and
 // then e is no longer the formula's: the contact ends early, at F_n = 0).
 // At first touch the dashpot makes the force jump from 0 to C_n v_n (Cundall & Strack's model).
+//
+// Stored elastic energy (J), the spring's potential, the integral of K_n delta d(delta):
+//   U = 1/2 K_n delta^2
+// With no_tension it is still the spring's: the clamp cuts the force only where the dashpot's
+// pull exceeds the spring's push (F_n = 0 while K_n delta > 0, the contact opening), so the
+// clamped force is K_n delta plus a non-conservative part -K_n delta that acts against the
+// opening speed: it only dissipates (its power -K_n delta v_n > 0 out of the system at v_n < 0),
+// and the elastic potential is unchanged. The energy balance then charges the clamp to
+// dissipated_J, as it does the dashpot.
 #pragma once
 #include <cmath>
 #include <stdexcept>
@@ -45,6 +54,12 @@ struct LinearSpringDashpot {
   }
   // Elastic part K_n delta (N), for diagnostics.
   BLAZE_HD Real elastic_force(Real delta, Real /*r_eff*/) const { return kn * delta; }
+  // Stored elastic energy 1/2 K_n delta^2 (J), in double whatever Real (energy bookkeeping sums
+  // it over every contact); 0 at delta <= 0.
+  BLAZE_HD double stored_energy(Real delta, Real /*r_eff*/) const {
+    const double d = delta > Real(0) ? static_cast<double>(delta) : 0.0;
+    return 0.5 * static_cast<double>(kn) * d * d;
+  }
   // Normal stiffness at this overlap (N/m), for the critical time step.
   Real stiffness(Real /*delta*/, Real /*r_eff*/) const { return kn; }
 };

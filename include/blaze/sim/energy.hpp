@@ -1,6 +1,8 @@
 // System energies from a host snapshot (J), for output and conservation checks:
 //   translational  sum 1/2 m v.v      rotational  sum 1/2 w_b . diag(I) w_b,  w_b = R^T w (body frame)
 //   potential      sum -m g.x         (zero at the origin)
+// The elastic energy stored in the contacts needs the contacts, not only the state: it is
+// Simulation::contact_energy() (kernels/contact_energy.hpp); RunLog adds the two.
 #pragma once
 #include "blaze/particles/particle_state.hpp"
 

@@ -14,6 +14,7 @@
 #include "blaze/grid/broad_phase.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/world/world.hpp"
+#include "kernels/contact_energy.hpp"
 #include "kernels/contact_forces.hpp"
 #include "kernels/pair_forces.hpp"
 #include "kernels/integrate.hpp"
@@ -55,6 +56,15 @@ struct PenetrationReport {
   double worst = 0;   // overlap / radius of the deepest contact
   Index worst_id = -1;
   long over = 0;      // particles whose deepest contact exceeded the threshold
+};
+
+// The elastic energy held in the open contacts now, and the contacts with world objects
+// (Simulation::contact_energy(); kernels/contact_energy.hpp).
+struct ContactEnergy {
+  double pairs = 0;        // J, particle-particle contacts, each pair once
+  double walls = 0;        // J, particle-world contacts (planar polygons and cylinders)
+  long wall_contacts = 0;  // particle-world contacts (a particle touching two walls counts 2)
+  double total() const { return pairs + walls; }
 };
 
 // Everything a run needs to continue bit for bit (with the same params, laws, world and shape):
@@ -187,6 +197,23 @@ class Simulation {
     for (Index c : to_host(stats_vertex_face_, store_.size())) vf += c;
     for (Index c : to_host(stats_edge_edge_, store_.size())) ee += c;
     return {vf / 2, ee / 2};
+  }
+  // Elastic energy stored in the contacts at the current positions, over the same neighbour list
+  // and with the same collide() calls as the force kernels, and the particle-world contact
+  // count. A diagnostic for the time series: one kernel and three per-particle downloads, run
+  // only when asked (never inside a step). Needs every law to have stored_energy().
+  ContactEnergy contact_energy() {
+    const Index n = store_.size();
+    for (auto* b : {&energy_pairs_, &energy_walls_})
+      b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
+    energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
+    const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
+    for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), world_.view(), laws_, slots});
+    ContactEnergy e;
+    for (double x : to_host(energy_pairs_, n)) e.pairs += x;  // index order: deterministic
+    for (double x : to_host(energy_walls_, n)) e.walls += x;
+    for (Index c : to_host(energy_wall_contacts_, n)) e.wall_contacts += c;
+    return e;
   }
   // Deepest overlap / radius per particle since the last call, then reset (Features::monitor).
   PenetrationReport take_penetration(double threshold) {
@@ -423,6 +450,8 @@ class Simulation {
   SimulationParams<Real> params_;
   PairTable<Law> laws_;
   Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
+  Buffer<double, Space> energy_pairs_, energy_walls_;  // contact_energy(), per particle
+  Buffer<Index, Space> energy_wall_contacts_;
   Buffer<Real, Space> slot_reals_[6];  // pairs once: force and contact point (x, y, z each)
   Buffer<std::uint8_t, Space> slot_state_;
   Buffer<Real, Space> slot_overlap_;
