@@ -30,7 +30,7 @@ struct ContactForces {
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       const auto bj = shape.body(p, j);
-      ContactGeometry<Real> g;
+      decltype(shape.collide(a.body, bj)) g;  // ContactGeometry, or PatchGeometry (contact_patch.hpp)
       if (i < j) {
         g = shape.collide(a.body, bj);
       } else {
@@ -39,7 +39,12 @@ struct ContactForces {
       }
       if (!g.touching) continue;
       sums.touch(g.kind == ContactKind::edge_edge, g.overlap);
-      sums.add(pair_force<Kinematics, Features>(laws, p, a, j, bj, g), g.point - a.body.x);
+      if constexpr (is_patch_geometry_v<decltype(g)>) {
+        const ContactWrench<Real> w = pair_force<Kinematics, Features>(laws, p, a, j, bj, g);
+        sums.add(w.force, g.point - a.body.x, w.moment);
+      } else {
+        sums.add(pair_force<Kinematics, Features>(laws, p, a, j, bj, g), g.point - a.body.x);
+      }
     }
     sums.store(p, stats, i);
   }

@@ -6,7 +6,11 @@
 //   v_rel = Kinematics::relative(v_i, w_i, p - x_i, v_j, w_j, p - x_j)  at the contact point p [m/s]
 //   m_eff = 1 / (1/m_i + 1/m_j)                                   [kg]
 //   T_i  += (p - x_i) x F_ij (thesis eq. 2.4)                     [N m]
+// A contact with a patch (PatchGeometry, contact_patch.hpp: polyhedron face contacts) evaluates the
+// law at each of its points and adds the patch's moment about p:
+//   T_i  += (p - x_i) x F_ij + M_ij,   M_ij = sum_k (p_k - p) x F_k     [N m]
 #pragma once
+#include "blaze/contact/contact_patch.hpp"
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/laws/contact_law.hpp"
 #include "blaze/particles/particle_store.hpp"
@@ -48,6 +52,19 @@ BLAZE_HD_INLINE Vec3<Real> pair_force(const PairTable<Law>& laws, const Particle
   return laws(a.material, p.material[j]).force(g, v_rel, m_eff);
 }
 
+// F_ij and its moment about g.point for a contact patch (contact_patch.hpp), each point with its
+// own relative velocity.
+template <class Kinematics, class Features, class Law, class Real, class Body>
+BLAZE_HD_INLINE ContactWrench<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
+                                               const PairSide<Real, Body>& a, Index j, const Body& bj,
+                                               const PatchGeometry<Real>& g) {
+  const Vec3<Real> vj = p.velocity.get(j);
+  const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
+  const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(a.v, a.w, x - a.body.x, vj, wj, x - bj.x); };
+  const Real m_eff = Real(1) / (a.inv_mass + p.inv_mass[j]);
+  return patch_force(laws(a.material, p.material[j]), g, v_rel, m_eff);
+}
+
 // Particle i's sums over its contacts, added in list order and stored once: force, torque
 // (Features::rotation), deepest overlap / radius (Features::monitor, kept as the maximum with
 // what the host reset), and contact counts by kind (Features::statistics).
@@ -66,6 +83,11 @@ struct ContactSums {
   BLAZE_HD_INLINE void add(const Vec3<Real>& fij, const Vec3<Real>& r) {
     f += fij;
     if constexpr (Features::rotation) t += cross(r, fij);
+  }
+  // A patch's F_ij with its moment m about the contact point.
+  BLAZE_HD_INLINE void add(const Vec3<Real>& fij, const Vec3<Real>& r, const Vec3<Real>& m) {
+    f += fij;
+    if constexpr (Features::rotation) t += cross(r, fij) + m;
   }
   BLAZE_HD_INLINE void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
     p.force.set(i, f);

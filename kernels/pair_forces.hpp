@@ -12,10 +12,12 @@
 // same expression, and both kernels add in list order. So the result is bitwise that of ContactForces, for half
 // its collisions and law evaluations, at the cost of a slot per list entry: 6 reals (3 without
 // rotation), a state byte, the overlap with Features::monitor, and the 4-byte reverse index,
-// 29 B per entry in float. It pays where a pair costs more than those bytes: polyhedra (1.8x on
+// 29 B per entry in float; shapes with contact patches (polyhedra) keep the patch's moment too,
+// 3 reals more (41 B in float, 77 B in double). It pays where a pair costs more than those bytes: polyhedra (1.8x on
 // the CPU), not spheres in double on the CPU (1.5x slower; bench/compare/README.md).
 #pragma once
 #include <cstdint>
+#include <type_traits>
 #include "blaze/exec/launch.hpp"
 #include "kernels/broad_phase_kernels.hpp"
 #include "kernels/contact_pair.hpp"
@@ -30,6 +32,8 @@ struct PairSlots {
   Real* point[3];       // m, the contact point (Features::rotation; null otherwise)
   std::uint8_t* state;  // 0: not touching; 1: vertex-face; 2: edge-edge
   Real* overlap;        // m (Features::monitor; null otherwise)
+  Real* moment[3];      // N m, a contact patch's moment about the point (shapes with patches and
+                        // Features::rotation; null otherwise)
 
   BLAZE_HD Vec3<Real> get(Real* const (&f)[3], std::size_t s) const { return {f[0][s], f[1][s], f[2][s]}; }
   BLAZE_HD void set(Real* const (&f)[3], std::size_t s, const Vec3<Real>& v) const { f[0][s] = v.x, f[1][s] = v.y, f[2][s] = v.z; }
@@ -53,20 +57,27 @@ struct PairForces {
       if (j < i) continue;  // j's kernel thread evaluates this pair
       const std::size_t s = list.offset(k, i);
       const auto bj = shape.body(p, j);
-      const ContactGeometry<Real> g = shape.collide(a.body, bj);
+      const auto g = shape.collide(a.body, bj);
       if (!g.touching) {
         slots.state[s] = 0;
         continue;
       }
       slots.state[s] = g.kind == ContactKind::edge_edge ? 2 : 1;
       if constexpr (Features::monitor) slots.overlap[s] = g.overlap;
-      slots.set(slots.force, s, pair_force<Kinematics, Features>(laws, p, a, j, bj, g));
+      if constexpr (is_patch_geometry_v<std::decay_t<decltype(g)>>) {
+        const ContactWrench<Real> w = pair_force<Kinematics, Features>(laws, p, a, j, bj, g);
+        slots.set(slots.force, s, w.force);
+        if constexpr (Features::rotation) slots.set(slots.moment, s, w.moment);
+      } else {
+        slots.set(slots.force, s, pair_force<Kinematics, Features>(laws, p, a, j, bj, g));
+      }
       if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
     }
   }
 };
 
-template <class Real, class Features>
+// Patches: the shape's contacts carry patches, so the slots hold their moments.
+template <class Real, class Features, bool Patches = false>
 struct GatherPairForces {
   ParticleView<Real> p;
   NeighbourView list;
@@ -85,7 +96,13 @@ struct GatherPairForces {
       if (state == 0) continue;
       sums.touch(state == 2, Features::monitor ? slots.overlap[s] : Real(0));
       const Vec3<Real> fs = slots.get(slots.force, s);
-      sums.add(own ? fs : -fs, Features::rotation ? slots.get(slots.point, s) - xi : Vec3<Real>{0, 0, 0});
+      const Vec3<Real> r = Features::rotation ? slots.get(slots.point, s) - xi : Vec3<Real>{0, 0, 0};
+      if constexpr (Patches && Features::rotation) {
+        const Vec3<Real> ms = slots.get(slots.moment, s);
+        sums.add(own ? fs : -fs, r, own ? ms : -ms);
+      } else {
+        sums.add(own ? fs : -fs, r);
+      }
     }
     sums.store(p, stats, i);
   }

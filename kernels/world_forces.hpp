@@ -1,6 +1,9 @@
 // Particle-world contact forces (thesis Algorithm 2.1, line 6), added to the particle's force and
-// torque. Walls are immovable here (infinite mass, zero velocity): m_eff = m_i.
+// torque. Walls are immovable here (infinite mass, zero velocity): m_eff = m_i. A contact with a
+// patch (contact_patch.hpp) adds the patch's moment about the contact point to the torque.
 #pragma once
+#include <type_traits>
+#include "blaze/contact/contact_patch.hpp"
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/exec/launch.hpp"
 #include "blaze/laws/contact_law.hpp"
@@ -28,17 +31,25 @@ struct WorldForces {
     bool touched = false;
     Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
     Real deepest = 0;
-    const auto apply = [&](const ContactGeometry<Real>& g, int material) {
+    const auto apply = [&](const auto& g, int material) {
       if (!g.touching) return;
       if (!touched) f = p.force.get(i), touched = true;
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - body.x;
       const Vec3<Real> zero{0, 0, 0};
       const Vec3<Real> w = Features::rotation ? p.angular_velocity.get(i) : zero;
-      const Vec3<Real> v_rel = Kinematics::relative(p.velocity.get(i), w, ri, zero, zero, zero);
-      const Vec3<Real> fw = laws(p.material[i], material).force(g, v_rel, Real(1) / p.inv_mass[i]);
-      f += fw;
-      if constexpr (Features::rotation) t += cross(ri, fw);
+      const Vec3<Real> vi = p.velocity.get(i);
+      if constexpr (is_patch_geometry_v<std::decay_t<decltype(g)>>) {  // contact_patch.hpp
+        const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(vi, w, x - body.x, zero, zero, zero); };
+        const ContactWrench<Real> fw = patch_force(laws(p.material[i], material), g, v_rel, Real(1) / p.inv_mass[i]);
+        f += fw.force;
+        if constexpr (Features::rotation) t += cross(ri, fw.force) + fw.moment;
+      } else {
+        const Vec3<Real> v_rel = Kinematics::relative(vi, w, ri, zero, zero, zero);
+        const Vec3<Real> fw = laws(p.material[i], material).force(g, v_rel, Real(1) / p.inv_mass[i]);
+        f += fw;
+        if constexpr (Features::rotation) t += cross(ri, fw);
+      }
     };
     for (int k = 0; k < world.polygon_count; ++k)
       apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material);

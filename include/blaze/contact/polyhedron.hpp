@@ -9,13 +9,41 @@
 // Any positive separation: no contact (thesis Theorem 1, the separating plane). Otherwise the
 // contact normal is the axis of least penetration and the overlap is that penetration (the
 // minimum translation that separates them), so the normal is continuous while bodies separate.
-// Ties go to faces (checked first). No preference margin: the overlap is then a continuous
-// function of the configuration, and k delta^2 / 2 a potential (see incident_point).
+// Ties go to faces (checked first). No preference margin in the axis: the overlap is then a
+// continuous function of the configuration, and k delta^2 / 2 a potential (see incident_point).
+// But the contact point prefers faces (issue 17.10): where an edge-pair axis beats the best face
+// axis by less than kFacePreference = 0.1% of the face's penetration, the normal and overlap are
+// the edge pair's while the point and patch are the face's (incident_point). Two faces resting
+// on each other make the axes of their edge pairs nearly the face normal, and a tilt within the
+// 1% band turned the face contact into an edge-edge point contact and back every few steps: the
+// patch (below) came and went, and a cube on a cube kept rocking at ~0.2 rad/s. Rigid-body codes
+// prefer face contacts the same way (Gregorius, "Robust contact creation for physics
+// simulations", GDC 2015; Box2D's b2CollidePolygons, a tolerance for the reference face); they
+// do it in the axis, which makes the overlap jump by up to the margin (a 1% margin there failed
+// the polyhedron_contact brute-force SAT check). Moving only the point moves the lever arm where
+// the margin applies, which is not conservative: with a 1% margin elastic cube-cube impacts at
+// random orientations changed their energy by up to 0.96% (28 of 5000 gained > 0.5%); with 0.1%
+// the worst is 0.27% (test_polyhedron_dynamics), and the rocking still dies out
+// (test_polyhedron_rest: as the tilt decays the edge axes fall inside the margin). The contact's
+// kind (statistics) stays the axis's.
 // Contact point: for a face axis, the deepest vertex of the incident body (the lever arm that
 // keeps the force conservative: the overlap is its penetration), spread over the vertices within
 // 1% of that depth so flat face-face contacts push through their centre (incident_point). For an
 // edge axis, the midpoint of the closest points of the two edges (thesis eqs. 3.4-3.5, clamped).
 // The thesis's Type 1 point is the mean of all contained vertices; it is kept with ThesisNormal.
+//
+// Contact patch (issue 17.10, contact_patch.hpp): the vertices of that 1% band are also the
+// contact's patch, with the same weights w_k (their depth into the band, normalised): when two
+// or more vertices share the deepest depth (a face or an edge lying on a face or a wall), the
+// law is evaluated at each of them with its own relative velocity and the share w_k,
+//   F_k = w_k law(delta, v_rel(p_k)),  F = sum_k F_k,  T_i = (p - x_i) x F + sum_k (p_k - p) x F_k,
+// with one overlap delta (the deepest vertex's) for all: the elastic force and its torque are
+// the one-point contact's, so are the static closed forms, while friction now acts at the
+// vertices (torsional friction about the normal, Johnson 1985 chapter 7) and the normal
+// dashpot damps rocking. A vertex-face contact (one vertex in the band), edge-edge contacts and
+// contacts with spheres stay points and cost what they did. The patch's points are the incident
+// body's vertices: a face larger than the reference face it lies on is not clipped to it, so a
+// body overhanging the edge of another's face gets a patch that reaches beyond the contact.
 //
 // The thesis picks the normal differently (sections 2.2.4, 3.2.3): the face of the other body
 // nearest to the deepest contained vertex ("the largest penetration distance"), or for edge-edge
@@ -32,13 +60,15 @@
 // the plane (lines 1-2); penetrating vertices whose foot lies inside the polygon are the contact;
 // overlap = the deepest; point = the deepest vertex, spread over those within 1% of its depth
 // (the thesis's mean of the penetrating vertices gains energy with the deepest overlap; see
-// penetrating_vertices). Cylinder (drum): vertices beyond the radius.
+// penetrating_vertices), and those vertices are the patch as above. Cylinder (drum): vertices
+// beyond the radius, the same way (the normal is the one through the weighted point).
 //
 // Rotation: principal moments in the body frame, I_world = R diag(I) R^T. Kick: w += I_world^-1 T h.
 // Drift at constant L = I_world w: midpoint rule q' = exp(w(q_half) dt) q, w' = I_world(q')^-1 L,
 // so |L| is conserved exactly in torque-free motion and the energy to second order.
 #pragma once
 #include "blaze/contact/contact_geometry.hpp"
+#include "blaze/contact/contact_patch.hpp"
 #include "blaze/contact/sphere.hpp"
 #include "blaze/core/mat3.hpp"
 #include "blaze/particles/particle_store.hpp"
@@ -130,6 +160,9 @@ BLAZE_HD inline Vec3<Real> segment_midpoint(const Vec3<Real>& p0, const Vec3<Rea
 template <class Real, class NormalChoice = SeparatingAxisNormal>
 struct PolyhedronShape {
   static constexpr const char* name = "polyhedron";
+  // An edge-pair axis that separates by at most this share of the best face axis's penetration
+  // more than that face keeps the face's contact point and patch (header comment).
+  static constexpr double kFacePreference = 1e-3;
   // Contact kernels: at least this many blocks of 256 per SM (launch.hpp): 4 caps them at 64
   // registers. BLAZE_POLYHEDRON_MIN_BLOCKS sets it for lever measurements (bench/results/levers/).
 #ifdef BLAZE_POLYHEDRON_MIN_BLOCKS
@@ -170,15 +203,19 @@ struct PolyhedronShape {
 
   BLAZE_HD bool is_sphere(const Body& b) const { return data(b.type).vertex_count == 0; }
 
-  BLAZE_HD ContactGeometry<Real> collide(const Body& a, const Body& b) const {
+  // A polyhedron face, edge-face or face-wall contact comes with its patch (contact_patch.hpp);
+  // contacts with spheres, edge-edge and vertex-face contacts are points (patch.count <= 1).
+  using Geometry = PatchGeometry<Real>;
+
+  BLAZE_HD Geometry collide(const Body& a, const Body& b) const {
     if (is_sphere(a) || is_sphere(b)) {
       if (is_sphere(a) && is_sphere(b))
-        return SphereShape{}.collide(SphereShape::Body<Real>{a.x, data(a.type).bounding_radius, a.index},
-                                     SphereShape::Body<Real>{b.x, data(b.type).bounding_radius, b.index});
-      if (is_sphere(b)) return polyhedron_sphere(a, b.x, data(b.type).bounding_radius);
+        return Geometry::of(SphereShape{}.collide(SphereShape::Body<Real>{a.x, data(a.type).bounding_radius, a.index},
+                                                  SphereShape::Body<Real>{b.x, data(b.type).bounding_radius, b.index}));
+      if (is_sphere(b)) return Geometry::of(polyhedron_sphere(a, b.x, data(b.type).bounding_radius));
       ContactGeometry<Real> g = polyhedron_sphere(b, a.x, data(a.type).bounding_radius);
       g.normal = -g.normal;
-      return g;
+      return Geometry::of(g);
     }
     return polyhedron_polyhedron(a, b);
   }
@@ -236,13 +273,13 @@ struct PolyhedronShape {
   // by r = R_B^T R_A one at a time. Only the edge sets (ArcSets) stay per thread: B's vertices and
   // planes, once held in per-thread arrays (896 B), lived in local memory and were most of the
   // kernel's DRAM traffic (issue 6, Nsight Compute: 13-15 GB per launch at 1e6 bodies, now 2-4).
-  BLAZE_HD ContactGeometry<Real> polyhedron_polyhedron(const Body& a, const Body& b) const {
+  BLAZE_HD Geometry polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = data(a.type);
     const PolyhedronData<Real>& B = data(b.type);
     const Vec3<Real> d = b.x - a.x;
     const Real reach = A.bounding_radius + B.bounding_radius;
-    if (!(norm2(d) < reach * reach)) return ContactGeometry<Real>::none();
+    if (!(norm2(d) < reach * reach)) return Geometry::none();
     const Mat3<Real> rb = Mat3<Real>::rotation(b.q);
     const Mat3<Real> r = rb.transpose_times(Mat3<Real>::rotation(a.q));  // A's body frame -> B's axes
     const Vec3<Real> u = rb.transpose_times(d);                          // B's centre
@@ -257,7 +294,7 @@ struct PolyhedronShape {
       Real s = dot(m, B.vertex[0]);
       for (int k = 1; k < B.vertex_count; ++k) s = min_r(s, dot(m, B.vertex[k]));
       s += dot(m, u) - A.offset[f];
-      if (s > Real(0)) return ContactGeometry<Real>::none();
+      if (s > Real(0)) return Geometry::none();
       if (s > best) best = s, kind = 0, index = f;
     }
     for (int f = 0; f < B.face_count; ++f) {
@@ -265,7 +302,7 @@ struct PolyhedronShape {
       Real s = dot(m, A.vertex[0]);
       for (int k = 1; k < A.vertex_count; ++k) s = min_r(s, dot(m, A.vertex[k]));
       s -= offset_b(f);
-      if (s > Real(0)) return ContactGeometry<Real>::none();
+      if (s > Real(0)) return Geometry::none();
       if (s > best) best = s, kind = 1, index = f;
     }
     // Edge pairs that are faces of the Minkowski difference.
@@ -298,27 +335,35 @@ struct PolyhedronShape {
       edge_of_a(ea, a0, da);
       for (std::uint64_t todo = crossing_edges(B, edge_axis_of(A, r, ea), sets, A.edge_face[ea][0], A.edge_face[ea][1]);
            todo != 0; todo &= todo - 1)
-        if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return ContactGeometry<Real>::none();
+        if (!edge_axis_test(ea, lowest_bit(todo), a0, da)) return Geometry::none();
     }
+    // An edge pair within kFacePreference of the best face axis: the face's point and patch
+    // (header comment).
+    const bool face_point = !(edge_best > best + Real(kFacePreference) * abs_r(best));
+    const int face_kind = kind;
     if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;
 
     const auto vertex_a = [&](int k) { return r * A.vertex[k]; };
     Vec3<Real> n{0, 0, 0}, point{0, 0, 0};
+    ContactPatch<Real> patch;
     Real overlap = -best;
     ContactKind contact_kind = ContactKind::vertex_face;
     if (kind == 2) {
       n = edge_axis;
       contact_kind = ContactKind::edge_edge;
+    }
+    if (kind == 2 && !face_point) {
       Vec3<Real> a0, da;
       edge_of_a(edge_a, a0, da);
       const Vec3<Real> b0 = vertex_b(B.edge_vertex[edge_b][0]);
       point = segment_midpoint(a0, da, b0, vertex_b(B.edge_vertex[edge_b][1]) - b0);
-    } else if (kind == 0) {
-      n = r * A.normal[index];
-      point = incident_point(n, A.offset[index], vertex_b, B.vertex_count);
+    } else if (face_kind == 0) {
+      const Vec3<Real> m = r * A.normal[index];
+      if (kind != 2) n = m;
+      point = incident_point(m, A.offset[index], vertex_b, B.vertex_count, patch);
     } else {
-      n = -B.normal[index];
-      point = incident_point(B.normal[index], offset_b(index), vertex_a, A.vertex_count);
+      if (kind != 2) n = -B.normal[index];
+      point = incident_point(B.normal[index], offset_b(index), vertex_a, A.vertex_count, patch);
     }
     if constexpr (std::is_same_v<NormalChoice, ThesisNormal>) {
       // Type 1: contained vertices of either body; the deepest one's nearest face gives the normal.
@@ -350,37 +395,45 @@ struct PolyhedronShape {
         overlap = deepest;
         point = sum * (Real(1) / static_cast<Real>(inside));
         contact_kind = ContactKind::vertex_face;
+        patch.count = 0;  // the thesis's contact is one point
       } else {
         n = point + (u - point);  // (PC - x_A) + (x_B - PC), x_A = 0 here
         n *= Real(1) / norm(n);
         contact_kind = ContactKind::edge_edge;
+        patch.count = 0;
       }
     }
     const Real r_eff = A.bounding_radius * B.bounding_radius / reach;
-    return {true, rb * n, overlap, a.x + rb * point, r_eff, contact_kind};
+    Geometry g;
+    static_cast<ContactGeometry<Real>&>(g) = {true, rb * n, overlap, a.x + rb * point, r_eff, contact_kind};
+    for (int k = 0; k < patch.count; ++k) patch.point[k] = a.x + rb * patch.point[k];
+    g.patch = patch;
+    return g;
   }
 
-  BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const PlanarPolygon<Real>& w) const {
+  BLAZE_HD Geometry collide_world(const Body& a, const PlanarPolygon<Real>& w) const {
     const PolyhedronData<Real>& A = data(a.type);
-    if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, w);
+    if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, A.bounding_radius, w));
     const Real d_com = dot(a.x - w.centroid, w.normal);
-    if (!(d_com > Real(0) && d_com < A.bounding_radius)) return ContactGeometry<Real>::none();
+    if (!(d_com > Real(0) && d_com < A.bounding_radius)) return Geometry::none();
     Vec3<Real> point;
     Real deepest;
     const auto below_inside = [&](const Vec3<Real>& v) {
       const Real dk = dot(v - w.centroid, w.normal);
       return dk < Real(0) && w.contains(v - dk * w.normal) ? -dk : Real(0);
     };
-    if (!penetrating_vertices(a, A, below_inside, point, deepest)) return ContactGeometry<Real>::none();
-    return {true, -w.normal, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+    Geometry g;
+    if (!penetrating_vertices(a, A, below_inside, point, deepest, g.patch)) return Geometry::none();
+    static_cast<ContactGeometry<Real>&>(g) = {true, -w.normal, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+    return g;
   }
 
-  BLAZE_HD ContactGeometry<Real> collide_world(const Body& a, const Cylinder<Real>& c) const {
+  BLAZE_HD Geometry collide_world(const Body& a, const Cylinder<Real>& c) const {
     const PolyhedronData<Real>& A = data(a.type);
-    if (A.vertex_count == 0) return collide_sphere(a.x, A.bounding_radius, c);
+    if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, A.bounding_radius, c));
     const Vec3<Real> rel = a.x - c.origin;
     const Vec3<Real> rho = rel - dot(rel, c.axis) * c.axis;
-    if (!(norm(rho) + A.bounding_radius > c.radius)) return ContactGeometry<Real>::none();
+    if (!(norm(rho) + A.bounding_radius > c.radius)) return Geometry::none();
     Vec3<Real> point;
     Real deepest;
     const auto beyond_radius = [&](const Vec3<Real>& v) {
@@ -388,11 +441,13 @@ struct PolyhedronShape {
       const Real s = dot(vr, c.axis);
       return s >= Real(0) && s <= c.length ? norm(vr - s * c.axis) - c.radius : Real(0);
     };
-    if (!penetrating_vertices(a, A, beyond_radius, point, deepest)) return ContactGeometry<Real>::none();
+    Geometry g;
+    if (!penetrating_vertices(a, A, beyond_radius, point, deepest, g.patch)) return Geometry::none();
     const Vec3<Real> mr = point - c.origin;
     Vec3<Real> n = mr - dot(mr, c.axis) * c.axis;
     n *= Real(1) / norm(n);
-    return {true, n, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+    static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+    return g;
   }
 
   // Rotation steps (see the header comment).
@@ -422,12 +477,14 @@ struct PolyhedronShape {
   // (verification/test_cube_at_rest.cpp); the thesis's mean depth with the mean point did worse.
   // So `point` is the deepest vertex, spread over the vertices within 1% of its depth as in
   // incident_point: a flat face still pushes through its centre. Two consequences: rocking on a
-  // flat face is stiff (~10x the normal contact frequency) and not damped by the normal dashpot,
-  // which acts at the centre; and a tensile (dashpot-pulled) normal force makes the rocking
-  // unstable, so damped flat contacts want the no-tension clamp.
+  // flat face is stiff (~10x the normal contact frequency), damped only because the band's
+  // vertices are the contact patch (the dashpot acts at each of them); and a tensile
+  // (dashpot-pulled) normal force makes the rocking unstable, so damped flat contacts want the
+  // no-tension clamp (a linear-law tetrahedron rocked at 0.08 rad/s without it:
+  // verification/test_polyhedron_rest.cpp).
   template <class Penetration>
   BLAZE_HD static bool penetrating_vertices(const Body& a, const PolyhedronData<Real>& A, const Penetration& penetration,
-                                            Vec3<Real>& point, Real& deepest) {
+                                            Vec3<Real>& point, Real& deepest, ContactPatch<Real>& patch) {
     const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
     deepest = 0;
     for (int k = 0; k < A.vertex_count; ++k) deepest = max_r(deepest, penetration(a.x + ra * A.vertex[k]));
@@ -435,12 +492,18 @@ struct PolyhedronShape {
     const Real floor = Real(0.99) * deepest;
     Vec3<Real> sum{0, 0, 0};
     Real weight = 0;
+    int count = 0;
     for (int k = 0; k < A.vertex_count; ++k) {
       const Vec3<Real> v = a.x + ra * A.vertex[k];
       const Real w = penetration(v) - floor;
-      if (w > Real(0)) sum += v * w, weight += w;
+      if (w > Real(0)) {
+        sum += v * w, weight += w;
+        if (count < ContactPatch<Real>::kMaxPoints) patch.point[count] = v, patch.weight[count] = w;
+        ++count;
+      }
     }
     point = sum * (Real(1) / weight);
+    finish_patch(patch, count, weight);
     return true;
   }
 
@@ -451,18 +514,33 @@ struct PolyhedronShape {
   // band only spreads the arm over (nearly) flat contacts, which it centres, and its weights
   // vary continuously as vertices enter it.
   template <class Vertex>
-  BLAZE_HD static Vec3<Real> incident_point(const Vec3<Real>& normal, Real offset, const Vertex& v, int count) {
+  BLAZE_HD static Vec3<Real> incident_point(const Vec3<Real>& normal, Real offset, const Vertex& v, int count,
+                                            ContactPatch<Real>& patch) {
     Real deepest = offset - dot(normal, v(0));
     for (int k = 1; k < count; ++k) deepest = max_r(deepest, offset - dot(normal, v(k)));
     const Real floor = deepest - (Real(0.01) * abs_r(deepest) + Real(1e-12) * abs_r(offset));
     Vec3<Real> sum{0, 0, 0};
     Real weight = 0;
+    int points = 0;
     for (int k = 0; k < count; ++k) {
       const Vec3<Real> vk = v(k);
       const Real w = offset - dot(normal, vk) - floor;
-      if (w > Real(0)) sum += vk * w, weight += w;
+      if (w > Real(0)) {
+        sum += vk * w, weight += w;
+        if (points < ContactPatch<Real>::kMaxPoints) patch.point[points] = vk, patch.weight[points] = w;
+        ++points;
+      }
     }
+    finish_patch(patch, points, weight);
     return sum * (Real(1) / weight);
+  }
+
+  // The band's vertices as the contact patch, weights normalised; one vertex, or more than the
+  // patch holds: a point contact at the weighted centre.
+  BLAZE_HD static void finish_patch(ContactPatch<Real>& patch, int count, Real weight) {
+    patch.count = count > ContactPatch<Real>::kMaxPoints ? 0 : count;
+    const Real inv = Real(1) / weight;
+    for (int k = 0; k < patch.count; ++k) patch.weight[k] *= inv;
   }
 
   // R diag(I^-1) R^T v and R diag(I) R^T v.

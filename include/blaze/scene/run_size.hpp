@@ -14,8 +14,10 @@
 //     device store     30 R + 11     (particle_store.hpp: 21 vector components, 4 quaternion, radius,
 //                                     inverse mass and inertia, scratch, penetration; 3 bytes, 2 Index)
 //     broad phase      16 + 3 R + 4 C, pairs once + C (7 R + 5) (keys, order, sort scratch,
-//                                     reference positions, list; reverse index and pair slots)
+//                                     reference positions, list; reverse index and pair slots,
+//                                     polyhedra + 3 R for the contact patch's moment)
 //     statistics       8             (contact counts by kind)
+//     energy sample    20            (stored contact energy per particle, Simulation::contact_energy)
 //     grid             8 (cells + 1) (cell start and end)
 //     host             3 (18 R + 6) + 4 R  (the scene's particles, the last good state, one sample)
 //     set-up           250           (the overlap hash of the placements and their names, freed
@@ -92,7 +94,8 @@ inline RunSize run_size(const Scene& s, bool gpu) {
   z.neighbours = std::max(16.0, std::ceil(1.25 * std::min(dense, std::max(0.0, z.particles - 1))) + 1);
   const double R = s.precision == PrecisionKind::float32 ? 4 : 8;
   const bool once = s.pair_evaluation == PairsKind::once || (s.pair_evaluation == PairsKind::automatic && !s.all_spheres());
-  const double per_particle = 30 * R + 11 + 16 + 3 * R + 4 * z.neighbours + (once ? z.neighbours * (7 * R + 5) : 0) + 8;
+  const double slot = s.all_spheres() ? 7 * R + 5 : 10 * R + 5;  // polyhedra: + the contact patch's moment
+  const double per_particle = 30 * R + 11 + 16 + 3 * R + 4 * z.neighbours + (once ? z.neighbours * slot : 0) + 8 + 20;
   const double device = z.particles * per_particle + 8 * (z.cells_total + 1);
   const double host_state = 18 * R + 6;
   const double run_host = z.particles * (3 * host_state + 4 * R), setup_host = z.particles * (host_state + 250);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/exec/fused_steps.hpp"
@@ -96,6 +97,10 @@ template <class Space, class Shape, class Law, class Integrator, class Kinematic
 class Simulation {
  public:
   using Real = typename Law::real_type;
+  // Does the shape report contact patches (contact_patch.hpp)? Then pairs once keep their moments.
+  using ShapeBody = decltype(std::declval<const Shape&>().body(std::declval<const ParticleView<Real>&>(), Index{}));
+  static constexpr bool kPatches = is_patch_geometry_v<std::decay_t<decltype(
+      std::declval<const Shape&>().collide(std::declval<const ShapeBody&>(), std::declval<const ShapeBody&>()))>>;
   using features = Features;
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
@@ -408,7 +413,8 @@ class Simulation {
   PairSlots<Real> pair_slots() {
     const NeighbourView nl = broad_.neighbours();
     const std::size_t entries = static_cast<std::size_t>(nl.capacity) * static_cast<std::size_t>(nl.stride);
-    for (int b = 0; b < (Features::rotation ? 6 : 3); ++b)  // contact points only with rotation
+    // Contact points only with rotation; patch moments only with rotation and patches.
+    for (int b = 0; b < (Features::rotation ? (kPatches ? 9 : 6) : 3); ++b)
       slot_reals_[b].resize(std::max(slot_reals_[b].size(), entries));
     slot_state_.resize(std::max(slot_state_.size(), entries));
     if constexpr (Features::monitor) slot_overlap_.resize(std::max(slot_overlap_.size(), entries));
@@ -416,6 +422,7 @@ class Simulation {
     for (int d = 0; d < 3; ++d) {
       s.force[d] = slot_reals_[d].data();
       s.point[d] = slot_reals_[3 + d].data();
+      s.moment[d] = kPatches && Features::rotation ? slot_reals_[6 + d].data() : nullptr;
     }
     s.state = slot_state_.data();
     s.overlap = Features::monitor ? slot_overlap_.data() : nullptr;
@@ -429,7 +436,7 @@ class Simulation {
       const PairSlots<Real> slots = pair_slots();
       timer_.time("contacts", [&] {
         for_each(Space{}, n, PairForces<Shape, Law, Kinematics, Features>{shape_, store_.view(), broad_.neighbours(), laws_, slots});
-        for_each(Space{}, n, GatherPairForces<Real, Features>{store_.view(), broad_.neighbours(), slots, contact_stats()});
+        for_each(Space{}, n, GatherPairForces<Real, Features, kPatches>{store_.view(), broad_.neighbours(), slots, contact_stats()});
       });
     } else {
       timer_.time("contacts", [&] { for_each(Space{}, n, contact_forces()); });
@@ -452,7 +459,7 @@ class Simulation {
   Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
   Buffer<double, Space> energy_pairs_, energy_walls_;  // contact_energy(), per particle
   Buffer<Index, Space> energy_wall_contacts_;
-  Buffer<Real, Space> slot_reals_[6];  // pairs once: force and contact point (x, y, z each)
+  Buffer<Real, Space> slot_reals_[9];  // pairs once: force, contact point, patch moment (x, y, z each)
   Buffer<std::uint8_t, Space> slot_state_;
   Buffer<Real, Space> slot_overlap_;
   ParticleStore<Real, Space> store_;
