@@ -112,14 +112,14 @@ struct BadValue {
 };
 
 const BadValue kBadValues[] = {
-    {"radius =", "radius = -2e-3", "key 'radius' = -0.002", "must be > 0 m"},
-    {"radius =", "radius = \"big\"", "key 'radius' = \"big\"", "a number > 0 m"},
+    {"radius =", "radius = -2e-3", "key 'radius' = -0.002", "must be in (0, 1000] m"},
+    {"radius =", "radius = \"big\"", "key 'radius' = \"big\"", "a number in (0, 1000] m"},
     {"restitution = 0.5", "restitution = 0", "key 'restitution' = 0", "(0, 1]"},
     {"restitution = 0.5", "restitution = 1.2", "key 'restitution' = 1.2", "(0, 1]"},
-    {"dt =", "dt = 0", "key 'dt' = 0", "must be > 0 s"},
-    {"dt =", "dt = -1e-5", "key 'dt' = -1e-05", "must be > 0 s"},
-    {"dt =", "dt = nan", "key 'dt' = nan", "must be > 0 s"},
-    {"density = 2500", "density = -2500", "key 'density' = -2500", "must be > 0 kg/m^3"},
+    {"dt =", "dt = 0", "key 'dt' = 0", "must be in (0, 1000] s"},
+    {"dt =", "dt = -1e-5", "key 'dt' = -1e-05", "must be in (0, 1000] s"},
+    {"dt =", "dt = nan", "key 'dt' = nan", "must be in (0, 1000] s"},
+    {"density = 2500", "density = -2500", "key 'density' = -2500", "must be in (0, 1e+09] kg/m^3"},
     {"density = 2500", "densty = 2500", "unknown key 'densty'", "allowed: name, density, youngs_modulus"},
     {"law =", "law = \"hooke\"", "key 'law' = \"hooke\"", "one of \"linear\" \"hertz\""},
     {"law =", "pair_evaluation = \"half\"\nlaw = \"linear\"", "key 'pair_evaluation' = \"half\"",
@@ -251,7 +251,7 @@ BOOST_AUTO_TEST_CASE(command_line_overrides_are_applied_and_validated) {
   const Scene t = parse_scene(edit("dt =", "steps_per_contact = 30"), "scene.toml", {"simulation.dt=3e-6"});
   BOOST_TEST(t.dt == 3e-6);
   const std::pair<const char*, const char*> bad[] = {
-      {"material[0].density=-1", "command line (--set): [[material]] #1: key 'density' = -1: must be > 0"},
+      {"material[0].density=-1", "command line (--set): [[material]] #1: key 'density' = -1: must be in (0, 1e+09]"},
       {"dt", "expected key=value"},
       {"material[7].density=1", "index '7' of 'material' must be 0..1"},
       {"simulation.dtt=1", "unknown key 'dtt'"},
@@ -269,7 +269,7 @@ BOOST_AUTO_TEST_CASE(command_line_overrides_are_applied_and_validated) {
       {"sim ulation.dt=1e-5", "unexpected ' '"},
       {"dt=1e-5\nend_time = 5", "control character"},
       {"dt=1e-5\rx", "control character"},
-      {"dt=1e-5 end_time = 5", "not TOML"},
+      {"dt=1e-5 end_time = 5", "key 'dt' = \"1e-5 end_time = 5\": a number"},
       {"precision=\"float", "not TOML"},
   };
   for (const auto& c : bad) {
