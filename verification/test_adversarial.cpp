@@ -13,7 +13,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include "blaze/exec/space.hpp"
 #include "verification/cases/adversarial_scenes.hpp"
 #include "verification/child_process.hpp"
@@ -64,9 +63,10 @@ bool finite_series(const fs::path& csv, std::string& why) {
 
 // The estimate the program printed ("memory estimate 0.0646 GB of host memory"), in bytes, or -1.
 double printed_estimate(const std::string& out) {
-  static const std::regex re("memory estimate ([0-9.e+-]+) GB of host memory");
-  std::smatch m;
-  return std::regex_search(out, m, re) ? std::stod(m[1]) * 1e9 : -1;
+  const std::string head = "memory estimate ";
+  const auto at = out.find(head);
+  if (at == std::string::npos || out.find(" GB of host memory", at) == std::string::npos) return -1;
+  return std::strtod(out.c_str() + at + head.size(), nullptr) * 1e9;
 }
 
 bool sanitized() {
