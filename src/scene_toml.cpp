@@ -718,7 +718,8 @@ void check_time_step(const toml::table& sim, const std::string& file, Scene& s) 
     // The stiffness of the pairing is what to raise: its [[pair]] (linear) or its materials' modulus (Hertz).
     std::size_t k = 0;
     while (k < s.pairs.size() && !(s.pairs[k].a == c.overlap_a && s.pairs[k].b == c.overlap_b)) ++k;
-    const std::string key = s.law == LawKind::hertz ? "material[" + std::to_string(c.overlap_a) + "].youngs_modulus"
+    const std::string key = k == s.pairs.size() ? "simulation.max_impact_speed"
+                            : s.law == LawKind::hertz ? "material[" + std::to_string(c.overlap_a) + "].youngs_modulus"
                             : "pair[" + std::to_string(k) + "]." + (s.pairs[k].stiffness > 0 ? "stiffness" : "contact_time");
     throw SceneError(s.place(key) + msg.str());
   }
