@@ -143,12 +143,13 @@ int run_scene(const Scene& s, const Options& o) {
   using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
   // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,
   // and every physical input of the scene must be as it was (scene_identity.hpp).
-  const std::string identity = identity_text(scene_identity(s));
+  const SceneIdentity scene_id = scene_identity(s);
+  const std::string identity = identity_text(scene_id);
   Checkpoint<Real> restart;
   std::string restart_log;  // the run's own bookkeeping saved after the identity
   if (!o.restart.empty()) {
     restart = read_checkpoint<Real>(o.restart);
-    const std::string why = identity_difference(restart.text, scene_identity(s), s, restart_log);
+    const std::string why = identity_difference(restart.text, scene_id, s, restart_log);
     if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
   }
   Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)

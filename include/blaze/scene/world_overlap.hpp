@@ -26,8 +26,17 @@ namespace blaze {
 class WorldOverlapCheck {
  public:
   WorldOverlapCheck(const Scene& s, double slack) : s_(s), slack_(slack) {
-    for (const auto& w : s.walls) polygons_.push_back(PlanarPolygon<double>::make(w.vertices, 0, w.rim_edges));
-    for (const auto& c : s.cylinders) cylinders_.push_back(Cylinder<double>::make(c.origin, c.axis, c.radius, c.length, 0));
+    // The objects' names for messages, formed once (a check runs per particle and object).
+    for (std::size_t k = 0; k < s.walls.size(); ++k) {
+      polygons_.push_back(PlanarPolygon<double>::make(s.walls[k].vertices, 0, s.walls[k].rim_edges));
+      polygon_names_.push_back("[[wall]] #" + std::to_string(k + 1) + " (" + s.place("wall[" + std::to_string(k) + "].vertices") + ")");
+    }
+    for (std::size_t k = 0; k < s.cylinders.size(); ++k) {
+      const CylinderSpec& c = s.cylinders[k];
+      cylinders_.push_back(Cylinder<double>::make(c.origin, c.axis, c.radius, c.length, 0));
+      cylinder_names_.push_back("[[cylinder]] #" + std::to_string(k + 1) + " (" +
+                                s.place("cylinder[" + std::to_string(k) + "].radius") + " = " + Scene::shortest(c.radius) + " m)");
+    }
     front_.assign(polygons_.size(), 0);
     behind_.assign(polygons_.size(), 0);
   }
@@ -63,7 +72,7 @@ class WorldOverlapCheck {
   void check_polygon(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
                      const std::string& who) {
     const PlanarPolygon<double>& w = polygons_[k];
-    const std::string object = "[[wall]] #" + std::to_string(k + 1) + " (" + s_.place("wall[" + std::to_string(k) + "].vertices") + ")";
+    const std::string& object = polygon_names_[k];
     const double d = dot(x - w.centroid, w.normal);
     const bool over = w.contains(x - d * w.normal);
     if (over) (d > 0 ? front_[k] : behind_[k]) += 1;
@@ -101,8 +110,7 @@ class WorldOverlapCheck {
   void check_cylinder(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
                       const std::string& who) const {
     const Cylinder<double>& c = cylinders_[k];
-    const std::string object = "[[cylinder]] #" + std::to_string(k + 1) + " (" +
-                               s_.place("cylinder[" + std::to_string(k) + "].radius") + " = " + Scene::shortest(c.radius) + " m)";
+    const std::string& object = cylinder_names_[k];
     const auto radial = [&](const Vec3<double>& p, double& s) {
       s = dot(p - c.origin, c.axis);
       return norm(p - c.origin - s * c.axis);
@@ -128,6 +136,7 @@ class WorldOverlapCheck {
   double slack_;
   std::vector<PlanarPolygon<double>> polygons_;
   std::vector<Cylinder<double>> cylinders_;
+  std::vector<std::string> polygon_names_, cylinder_names_;
   std::vector<long> front_, behind_;
 };
 
