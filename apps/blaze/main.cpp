@@ -205,8 +205,8 @@ int run_scene(const Scene& s, const Options& o) {
       write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save());
     if (write_csv || write_vtu) {
       const auto st = sim.state();
+      if (write_csv) log.sample(sim, st);  // the guards: a state that trips one is not a good one
       last_good = st;
-      if (write_csv) log.sample(sim, st);
       if (write_vtu) {
         char name[64];
         std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
