@@ -42,7 +42,7 @@ TEST_LIBS_cpu := -lboost_unit_test_framework -lgsl -lgslcblas
 TEST_LIBS_cuda := -lgsl -lgslcblas
 PLOT_LIBS := $(if $(wildcard /usr/include/gnuplot-iostream.h),-lboost_iostreams -lboost_filesystem -lboost_system)
 
-HEADERS := $(shell find include kernels verification studies bench apps -name '*.hpp')
+HEADERS := $(shell find include kernels pipeline verification studies bench apps -name '*.hpp')
 # Host-only sources, compiled by g++ for both backends (toml++ does not compile under nvcc).
 HOST_OBJ := $(BUILD)/host/src/scene_toml.o
 TEST_SRC ?= $(wildcard verification/*.cpp)
@@ -113,6 +113,7 @@ test: deps
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $(call RUN_TESTS,cpu)
 else
 test: deps
+	@tools/check_layering.sh
 	@$(MAKE) --no-print-directory -j$(NPROC) build-cpu
 	@$(MAKE) --no-print-directory check-cuda
 	$(call RUN_TESTS,cpu)

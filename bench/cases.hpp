@@ -6,12 +6,12 @@
 #include <cstdio>
 #include <string>
 #include <vector>
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/laws/hertz.hpp"
 #include "blaze/laws/history_free_friction.hpp"
 #include "blaze/laws/linear_spring_dashpot.hpp"
-#include "blaze/scenes/gravity_packing.hpp"
-#include "blaze/scenes/polyhedron_packing.hpp"
+#include "pipeline/gravity_packing.hpp"
+#include "pipeline/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 
 namespace blaze::bench {

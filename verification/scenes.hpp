@@ -1,11 +1,11 @@
 // Small scenes shared by the verification cases: laws, materials and the simulation type.
 #pragma once
 #include <random>
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/laws/standard_laws.hpp"
 #include "blaze/sim/energy.hpp"
-#include "blaze/sim/simulation.hpp"
-#include "blaze/scenes/gravity_packing.hpp"
+#include "pipeline/simulation.hpp"
+#include "pipeline/gravity_packing.hpp"
 #include "verification/tolerances.hpp"
 
 namespace blaze::test {

@@ -1,6 +1,6 @@
 // Contact-type frequency of cubes (thesis section 3.4.3, Fig 3.27; scenes after sections 3.4.1-3.4.2).
 //
-// Kind of a contact: the separating-axis kernel (contact/polyhedron.hpp) takes the axis of least
+// Kind of a contact: the separating-axis kernel (shapes/polyhedron_shape.hpp) takes the axis of least
 // penetration; a face normal makes it vertex-face (the thesis's Type 1: vertex-face or face-face),
 // the cross product of an edge pair makes it edge-edge (Type 2). Simulation::contact_counts()
 // returns both counts of the last force evaluation, over particle-particle contacts only. Wall and
@@ -49,8 +49,8 @@
 #include <random>
 #include <string>
 #include <vector>
-#include "blaze/contact/polyhedron.hpp"
-#include "blaze/scenes/polyhedron_packing.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
+#include "pipeline/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"

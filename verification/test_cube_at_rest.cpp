@@ -1,7 +1,7 @@
 // A cube dropped on its face comes to rest (thesis section 3.3.1.3, Figs 3.14-3.15). Cube of
 // bounding radius 0.25 cm (cases/single_body.hpp), Hertz K_n = 1e9 N/m^(3/2) with the thesis's
 // delta^(1/2) damping K_D = 5e4 kg s^-1 m^-1/2 (eqs. 3.6-3.7), gravity 9.81 m/s^2, planar floor.
-// Closed form at rest: the polyhedron-wall contact (polyhedron.hpp collide_world) takes the depth
+// Closed form at rest: the polyhedron-wall contact (polyhedron_shape.hpp collide_world) takes the depth
 // of the deepest penetrating vertex as the overlap and acts at that vertex, spread over the
 // vertices within 1% of its depth. A cube lying flat has its four lower vertices at one depth
 // delta, so the point is the face centre below the centre of mass (no torque), and the one
@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE(cube_dropped_on_face_settles_at_static_penetration) {
 
 // The rest state above rests on the polyhedron-wall contact point. The overlap is the deepest
 // vertex's depth, so the force is conservative only if it acts through that vertex (it is the
-// gradient of 2/5 K_n delta^(5/2) with delta = max_k depth_k); polyhedron.hpp spreads the point
+// gradient of 2/5 K_n delta^(5/2) with delta = max_k depth_k); polyhedron_shape.hpp spreads the point
 // over the vertices within 1% of that depth. The thesis's point, the mean of all penetrating
 // vertices, is not that gradient: an elastic cube dropped almost flat left the floor with up to
 // 2.2 times the kinetic energy it arrived with. Here 32 near-flat (tilts ~1 degree) and 32 random

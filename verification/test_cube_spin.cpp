@@ -14,7 +14,7 @@
 #include <boost/mpl/list.hpp>
 #include <cmath>
 #include <string>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"

@@ -24,7 +24,7 @@
 #include <filesystem>
 #include <random>
 #include <string>
-#include "blaze/sim/run_log.hpp"
+#include "pipeline/run_log.hpp"
 #include "verification/report.hpp"
 #include "verification/run_program.hpp"
 #include "verification/scenes.hpp"

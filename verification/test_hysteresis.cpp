@@ -25,7 +25,7 @@
 #include <cmath>
 #include <string>
 #include <vector>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"

@@ -57,7 +57,7 @@ InclineResult roll_down(const InclineCase& c, FigureData& fig) {
     if (k % 10 != 0) continue;
     const auto p = sim.state();
     const double t = sim.time(), v = p.velocity[0].x;
-    // Contact point below the centre at r - overlap/2 (sphere.hpp): slip = v_x + w_z (r - delta/2).
+    // Contact point below the centre at r - overlap/2 (sphere_shape.hpp): slip = v_x + w_z (r - delta/2).
     const double arm = kRadius - 0.5 * (kRadius - p.position[0].y);
     slip = v + p.angular_velocity[0].z * arm;
     speed = v;

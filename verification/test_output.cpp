@@ -10,7 +10,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/scenes.hpp"

@@ -13,9 +13,9 @@
 #include <cstring>
 #include <type_traits>
 #include "verification/scenes.hpp"
-#include "blaze/scenes/gravity_packing.hpp"
+#include "pipeline/gravity_packing.hpp"
 #include "verification/cases/cube_bed.hpp"
-#include "blaze/scenes/polyhedron_packing.hpp"
+#include "pipeline/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 
 using namespace blaze;

@@ -6,7 +6,7 @@
 // least-penetration axis is shallower than every other axis by more than rounding).
 #include <boost/test/unit_test.hpp>
 #include <random>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/reference_sat.hpp"
 #include "verification/tolerances.hpp"
@@ -113,7 +113,7 @@ BOOST_AUTO_TEST_CASE(agrees_with_brute_force_separating_axes) {
                                                          << total.worst_angle << " deg");
 }
 
-// The edge pairs the separating-axis test visits (bit sets, polyhedron.hpp) must be exactly those
+// The edge pairs the separating-axis test visits (bit sets, polyhedron_shape.hpp) must be exactly those
 // whose Gauss-map arcs cross, tested pair by pair in the textbook form: a, b the normals beside
 // A's edge, c, d the negated normals beside B's edge,
 //   (c.(b x a)) (d.(b x a)) < 0,  (a.(d x c)) (b.(d x c)) < 0,  (c.(b x a)) (b.(d x c)) > 0.

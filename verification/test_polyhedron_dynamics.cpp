@@ -6,8 +6,8 @@
 #include <boost/test/unit_test.hpp>
 #include <random>
 #include <sstream>
-#include "blaze/contact/polyhedron.hpp"
-#include "blaze/scenes/polyhedron_packing.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
+#include "pipeline/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/scenes.hpp"
 

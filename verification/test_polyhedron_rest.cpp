@@ -6,7 +6,7 @@
 // mu = 0.5 and tangential damping K_T (eq. 2.3), and on the floor also mu = 0.
 // A face (or edge) contact carries the weight over an area, so it resists turning about the
 // normal (torsional friction) and rocking (the normal dashpot acts off the centre); reduced to
-// one point under the centre it does neither (polyhedron.hpp, contact_patch.hpp: the patch).
+// one point under the centre it does neither (polyhedron_shape.hpp, contact_patch.hpp: the patch).
 //   settled:  the first 1 ms sample, after the body has first moved up or stopped (its first
 //             contact), where |v| < 1 mm/s;
 //   at rest:  max |omega| over the samples in [t_settle + 0.2 s, 0.5 s] <= 1e-6 rad/s, and
@@ -25,7 +25,7 @@
 #include <random>
 #include <string>
 #include <vector>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/cases/single_body.hpp"
 #include "verification/report.hpp"
@@ -63,7 +63,7 @@ const LawCase kFrictionalLaws[] = {{"linear, mu = 0.5", false, 0.5}, {"Hertz, mu
 // One law for every material pair. Linear: k = 2e3 N/m (t_c ~ 1.5 ms for the cube, 4.8e-4 kg),
 // e = 0.3. Hertz: E* = 1.5 MPa, K_n = 4/3 E* sqrt(R*) (delta_max ~ 0.1 mm at 0.14 m/s, t_c ~ 2 ms),
 // e = 0.3 exact (delta^(1/4) damping). Both without tension (Hertz's scene-file default; for the
-// linear law polyhedron.hpp explains why damped flat contacts want it: a tensile dashpot force
+// linear law polyhedron_shape.hpp explains why damped flat contacts want it: a tensile dashpot force
 // at the lifting vertices drives the rocking, and a tetrahedron kept rocking at 0.08 rad/s).
 // K_T = 0.1 kg/s: below the Coulomb cap the history-free law is viscous, so a resting spin decays
 // as exp(-K_T sum_k w_k r_k^2 / I t) (r_k: the patch's vertices from its centre), at ~110 /s for

@@ -8,10 +8,10 @@
 #include <fstream>
 #include <random>
 #include <sstream>
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 #include "verification/tolerances.hpp"
 
 using namespace blaze;

@@ -15,10 +15,10 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 #include "verification/report.hpp"
 #include "verification/run_program.hpp"
 #include "verification/tolerances.hpp"

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/exec/device_info.hpp"
 #include "blaze/io/checkpoint.hpp"
 #include "blaze/io/vtu_writer.hpp"
@@ -21,9 +21,9 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_identity.hpp"
-#include "blaze/sim/run_log.hpp"
+#include "pipeline/run_log.hpp"
 #include "blaze/sim/schedule.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
 
 using namespace blaze;

@@ -17,7 +17,7 @@
 #include <gnuplot-iostream.h>
 #define BLAZE_HAVE_GNUPLOT 1
 #endif
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/exec/device_info.hpp"
 #include "blaze/io/manifest.hpp"
 #include "blaze/io/vtu_writer.hpp"
@@ -25,7 +25,7 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
 
 using namespace blaze;

@@ -4,9 +4,9 @@
 // e = 0.5, history-free friction mu = 0.4, K_T = 0.05 kg/s, dt = t_c / 25 (m* = m / 2).
 #pragma once
 #include <cmath>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/laws/standard_laws.hpp"
-#include "blaze/scenes/polyhedron_packing.hpp"
+#include "pipeline/polyhedron_packing.hpp"
 #include "blaze/shapes/shape_io.hpp"
 
 namespace blaze::test::cases {

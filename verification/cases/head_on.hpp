@@ -9,11 +9,11 @@
 #pragma once
 #include <chrono>
 #include <cmath>
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/laws/contact_law.hpp"
 #include "blaze/laws/hertz.hpp"
 #include "blaze/laws/history_free_friction.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 
 namespace blaze::test::cases {
 

@@ -9,7 +9,7 @@
 //   v_o' = -(m_o - m_c)/(m_o + m_c) v,   v_c' = -2 m_o/(m_o + m_c) v   (y components, m/s),
 // so the separation speed equals the approach speed v.
 // K_n is exact for this contact: Hertz::from_stiffness(K_n, r_ref) with r_ref = the effective
-// radius polyhedron.hpp gives a polyhedron pair, R_o R_c / (R_o + R_c) = 1.25 mm.
+// radius polyhedron_shape.hpp gives a polyhedron pair, R_o R_c / (R_o + R_c) = 1.25 mm.
 // Precision and integrator are template parameters (the work-precision study times this runner);
 // with `record` every step's penetration, force and velocities are kept (one host copy per step).
 #pragma once
@@ -19,7 +19,7 @@
 #include "blaze/laws/contact_law.hpp"
 #include "blaze/laws/hertz.hpp"
 #include "blaze/laws/history_free_friction.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 #include "verification/cases/single_body.hpp"
 
 namespace blaze::test::cases {

@@ -13,9 +13,9 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/shape_io.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 
 namespace blaze::test::cases {
 

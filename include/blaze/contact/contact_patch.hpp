@@ -1,5 +1,5 @@
 // A contact patch: a contact that carries its load over an area, as a few points with weights
-// (issue 17, item 10). Polyhedron face, edge-face and face-wall contacts report one (polyhedron.hpp);
+// (issue 17, item 10). Polyhedron face, edge-face and face-wall contacts report one (polyhedron_shape.hpp);
 // spheres and point contacts do not, and their code is unchanged.
 //
 //   one overlap delta, one normal n, one law;  points p_k, weights w_k > 0, sum_k w_k = 1:
@@ -34,7 +34,7 @@ namespace blaze {
 template <class Real>
 struct ContactPatch {
   // A face of a shipped shape has at most 6 vertices (corn); 8 covers any face within the
-  // 1% band (polyhedron.hpp). More: the shape reports a point contact at the weighted centre.
+  // 1% band (polyhedron_shape.hpp). More: the shape reports a point contact at the weighted centre.
   static constexpr int kMaxPoints = 8;
   int count = 0;  // 0 or 1: a point contact at geometry.point
   Vec3<Real> point[kMaxPoints];

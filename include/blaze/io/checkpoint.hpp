@@ -22,7 +22,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include "blaze/sim/simulation.hpp"
+#include "blaze/sim/snapshot.hpp"
 
 namespace blaze {
 

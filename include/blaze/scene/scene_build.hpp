@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <random>
 #include <unordered_map>
-#include "blaze/contact/polyhedron.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/laws/standard_laws.hpp"
 #include "blaze/scene/critical_step.hpp"
 #include "blaze/scene/run_size.hpp"

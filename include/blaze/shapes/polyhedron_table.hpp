@@ -23,7 +23,7 @@ struct PolyhedronData {
   // A convex polyhedron within the caps has E = V + F - 2 <= 62 edges, so 64 bits hold them.
   std::uint64_t edges_left_of[kMaxFaces], edges_right_of[kMaxFaces];
   // normal[right] x normal[left] of each edge: the edge's Gauss-map arc, which the separating-axis
-  // test's edge-pair selection tests against (polyhedron.hpp, crossing_edges).
+  // test's edge-pair selection tests against (polyhedron_shape.hpp, crossing_edges).
   Vec3<Real> edge_arc[kMaxEdges];
   int vertex_count, face_count, edge_count;  // all 0: a sphere of radius bounding_radius
   Real bounding_radius;    // m (bound_R)

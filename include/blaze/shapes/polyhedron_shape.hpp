@@ -69,7 +69,7 @@
 #pragma once
 #include "blaze/contact/contact_geometry.hpp"
 #include "blaze/contact/contact_patch.hpp"
-#include "blaze/contact/sphere.hpp"
+#include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/core/mat3.hpp"
 #include "blaze/particles/particle_store.hpp"
 #include "blaze/shapes/polyhedron_table.hpp"

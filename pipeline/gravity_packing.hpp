@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 #include "blaze/particles/particle_state.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 #include "blaze/world/world.hpp"
 
 namespace blaze {

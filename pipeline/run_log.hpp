@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 #include "blaze/sim/energy.hpp"
-#include "blaze/sim/simulation.hpp"
+#include "pipeline/simulation.hpp"
 
 namespace blaze {
 

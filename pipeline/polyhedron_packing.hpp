@@ -18,8 +18,8 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
-#include "blaze/contact/polyhedron.hpp"
-#include "blaze/scenes/gravity_packing.hpp"
+#include "blaze/shapes/polyhedron_shape.hpp"
+#include "pipeline/gravity_packing.hpp"
 
 namespace blaze {
 

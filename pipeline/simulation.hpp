@@ -12,8 +12,9 @@
 #include <vector>
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/exec/fused_steps.hpp"
-#include "blaze/grid/broad_phase.hpp"
+#include "pipeline/broad_phase.hpp"
 #include "blaze/sim/features.hpp"
+#include "blaze/sim/snapshot.hpp"
 #include "blaze/world/world.hpp"
 #include "kernels/contact_energy.hpp"
 #include "kernels/contact_forces.hpp"
@@ -68,19 +69,8 @@ struct ContactEnergy {
   double total() const { return pairs + walls; }
 };
 
-// Everything a run needs to continue bit for bit (with the same params, laws, world and shape):
-// the store's raw arrays and the counters. Taken right after a neighbour-list rebuild, so the
-// restarted run rebuilds the same list (Simulation::snapshot()).
-template <class Real>
-struct SimulationSnapshot {
-  StoreSnapshot<Real> store;
-  std::uint64_t steps = 0;
-  Index initial_count = 0, removed_count = 0;
-  double removed_mass = 0, removed_energy = 0;
-};
-
 // A shape policy with a table that its kernels read from the space's memory names it Resident
-// and has members `table` and `resident` (polyhedron.hpp); the Simulation keeps that copy.
+// and has members `table` and `resident` (polyhedron_shape.hpp); the Simulation keeps that copy.
 template <class Shape, class = void>
 struct ResidentTable {
   static constexpr bool value = false;
