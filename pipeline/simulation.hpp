@@ -1,6 +1,7 @@
-// One simulation on one memory space: the time step as a fixed sequence of kernels over views
-//   pre_force integrate -> [rebuild: hash, sort, reorder, cells, neighbours] -> contacts -> world
-//   -> post_force integrate
+// One simulation on one memory space: the time step as a list of named phases over views
+// (step_phases(); blaze/exec/phases.hpp runs it, one launch per phase or many steps per launch)
+//   integrate (pre-force) -> rebuild-check [-> rebuild: hash, sort, reorder, cells, neighbours]
+//   -> contacts -> walls -> integrate (post-force)
 // (thesis Algorithm 2.1). Shape, law, integrator, contact kinematics and features are policies.
 #pragma once
 #include <algorithm>
@@ -11,7 +12,7 @@
 #include <utility>
 #include <vector>
 #include "blaze/contact/kinematics.hpp"
-#include "blaze/exec/fused_steps.hpp"
+#include "blaze/exec/phases.hpp"
 #include "pipeline/broad_phase.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/sim/snapshot.hpp"
@@ -29,9 +30,8 @@ namespace blaze {
 //               (contact_forces.hpp): no storage beyond the list;
 //   once:       each pair evaluated once into a slot per list entry, then gathered per particle
 //               (pair_forces.hpp): half the collisions and law evaluations, 29 B (float) or
-//               53 B (double) more per list entry. Small systems then take one launch per
-//               phase, not the fused batches of fused_steps.hpp. A scene's choice: it pays
-//               for polyhedra, whose pairs are dear, not for spheres (bench/README.md).
+//               53 B (double) more per list entry. A scene's choice: it pays for polyhedra,
+//               whose pairs are dear, not for spheres (bench/README.md).
 enum class PairEvaluation { both_sides, once };
 
 template <class Real>
@@ -104,8 +104,8 @@ class Simulation {
     world_.upload(world);
     initial_count_ = store_.size();
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
-    refresh_neighbours(0);
-    compute_forces();
+    first_build();
+    run_phases(Space{}, store_.size(), step_phases(), kFirstForcePhase, kPostForcePhase, timer_);
     for_each(Space{}, store_.size(), integrate<Stage::prime>());
   }
 
@@ -128,7 +128,7 @@ class Simulation {
     removed_mass_ = snap.removed_mass;
     removed_energy_ = snap.removed_energy;
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
-    refresh_neighbours(steps_);
+    first_build();
   }
 
   // Rebuilds the neighbour list now (moving force and torque along), then takes the snapshot. The
@@ -157,11 +157,7 @@ class Simulation {
   // FMAs per kernel).
   void step() {
     if (fused()) return run_batched(1);
-    pre_force();
-    refresh_neighbours(steps_ + 1);
-    compute_forces();
-    post_force();
-    ++steps_;
+    finish_step(0);
   }
   // `steps` steps; bitwise the same as calling step() that many times (with the phase timer in the
   // same state). Small systems (fused()) run them in batches (run_batched).
@@ -169,12 +165,10 @@ class Simulation {
     if (fused()) return run_batched(steps);
     for (std::uint64_t s = 0; s < steps; ++s) step();
   }
-  // Steps of small systems run as one launch per batch (fused_steps.hpp), unless the phase timer
-  // is on (the phases are then timed one by one). Larger systems take one launch per phase and
-  // one host round trip per step (the rebuild check), a small share of their step.
-  bool fused() const {
-    return store_.size() <= kFusedMaxParticles && !timer_.enabled && params_.pairs == PairEvaluation::both_sides;
-  }
+  // Steps of small systems run as one launch per batch (phases.hpp), unless the phase timer is on
+  // (the phases are then timed one by one). Larger systems take one launch per phase and one host
+  // round trip per step (the rebuild check), a small share of their step.
+  bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
 
   ParticleState<Real> state() const {
     ParticleState<Real> s = store_.download();
@@ -310,20 +304,59 @@ class Simulation {
     return {shape_, store_.view(), params_.dt, {params_.gravity, params_.drag}};
   }
 
-  // A batch of K steps in one launch with no host round trip per step: each step's rebuild check
-  // is written to a device flag and the batch stops at the first step whose flag is set (it needs
-  // a rebuild, or found a non-finite position), just after that step's pre phase; the flags are
-  // read once. That step is then finished as step() would (rebuild, or the NaN report). K doubles
-  // after a clean batch up to kMaxBatch and falls to the steps a rebuild took otherwise.
+  // The step (phases.hpp): every phase in order. A phase added here runs in every step, batched
+  // or not. Builds the functors from the current views (a rebuild moves and resizes them), after
+  // sizing what they write (statistics, pair slots).
+  static constexpr int kRebuildCheck = 1, kFirstForcePhase = 2, kPostForcePhase = 6;
+  auto step_phases() {
+    prepare_statistics();
+    const bool once = params_.pairs == PairEvaluation::once;
+    const PairSlots<Real> slots = once ? pair_slots() : PairSlots<Real>{};
+    const ParticleView<Real> p = store_.view();
+    const NeighbourView nl = broad_.neighbours();
+    auto phases = make_phases(
+        kernel_phase("integrate", integrate<Stage::pre_force>()),
+        check_phase("rebuild-check", broad_.rebuild_check_functor(store_)),
+        kernel_phase("contacts", contact_forces(), !once),
+        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots}, once),
+        kernel_phase("contacts", GatherPairForces<Real, Features, kPatches>{p, nl, slots, contact_stats()}, once),
+        kernel_phase("walls", world_forces(), !world_.empty()),
+        kernel_phase("integrate", integrate<Stage::post_force>()));
+    static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");
+    return phases;
+  }
+
+  // The step's phases from `from` on; a check that stops it is acted on (on_check) and the phases
+  // after it follow.
+  void finish_step(int from) {
+    for (;;) {
+      const PhaseStop stop = run_phases(Space{}, store_.size(), step_phases(), from, kPostForcePhase + 1, timer_);
+      if (stop.index < 0) break;
+      on_check(stop);
+      from = stop.index + 1;
+    }
+    ++steps_;
+  }
+  // What a check phase's code asks for. The rebuild check: 1, rebuild the neighbour list (moving
+  // particles in memory, dropping those that left); 2, a position is not finite.
+  void on_check(const PhaseStop& stop) {
+    if (stop.index != kRebuildCheck) throw std::logic_error("simulation: a check phase without a handler");
+    if (stop.code == 2) throw_non_finite(steps_ + 1);
+    apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
+  }
+
+  // A batch of K steps in one launch with no host round trip per step (phases.hpp): the batch
+  // stops at the first step whose check is set (it needs a rebuild, or found a non-finite
+  // position), just after that check; the flags are read once. That step is then finished as
+  // step() would. K doubles after a clean batch up to kMaxBatch and falls to the steps a rebuild
+  // took otherwise.
   static constexpr std::uint64_t kMinBatch = 4, kMaxBatch = 256;
   void run_batched(std::uint64_t steps) {
     while (steps > 0) {
       const std::uint64_t k = std::min(batch_, steps);
       flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
-      prepare_statistics();
-      fused_steps(Space{}, store_.size(), k, integrate<Stage::pre_force>(), broad_.rebuild_check_functor(store_),
-                  contact_forces(), world_forces(), !world_.empty(), integrate<Stage::post_force>(), flags_.data());
+      fused_steps(Space{}, store_.size(), k, step_phases(), flags_.data());
       const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
       const auto j = static_cast<std::uint64_t>(std::find_if(flags.begin(), flags.end(), [](int f) { return f != 0; }) - flags.begin());
       steps_ += j;
@@ -332,28 +365,18 @@ class Simulation {
         batch_ = std::min(2 * batch_, kMaxBatch);
         continue;
       }
-      refresh_neighbours(steps_ + 1);  // step j, from just after its pre phase
-      compute_forces();
-      post_force();
-      ++steps_;
+      const PhaseStop stop = PhaseStop::of_flag(flags[j]);  // step j, from just after its check
+      on_check(stop);
+      finish_step(stop.index + 1);
       steps -= j + 1;
       batch_ = std::max(kMinBatch, j + 1);
     }
   }
 
-  void pre_force() {
-    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::pre_force>()); });
-  }
-  void post_force() {
-    timer_.time("integrate", [&] { for_each(Space{}, store_.size(), integrate<Stage::post_force>()); });
-  }
-
-  // `step`: the step being taken (0 before the first), for the NaN guard's message.
-  void refresh_neighbours(std::uint64_t step) {
-    int check = 0;
-    timer_.time("rebuild-check", [&] { check = broad_.rebuild_check(store_); });
-    if (check == 2) throw_non_finite(step);
-    if (check == 0) return;
+  // The first neighbour list (a new run, or a restored one: the same positions in the same order
+  // rebuild the same list).
+  void first_build() {
+    if (broad_.rebuild_check(store_) == 2) throw_non_finite(steps_);
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
   }
   template <class Removed>
@@ -417,21 +440,6 @@ class Simulation {
     s.state = slot_state_.data();
     s.overlap = Features::monitor ? slot_overlap_.data() : nullptr;
     return s;
-  }
-
-  void compute_forces() {
-    prepare_statistics();
-    const Index n = store_.size();
-    if (params_.pairs == PairEvaluation::once) {
-      const PairSlots<Real> slots = pair_slots();
-      timer_.time("contacts", [&] {
-        for_each(Space{}, n, PairForces<Shape, Law, Kinematics, Features>{shape_, store_.view(), broad_.neighbours(), laws_, slots});
-        for_each(Space{}, n, GatherPairForces<Real, Features, kPatches>{store_.view(), broad_.neighbours(), slots, contact_stats()});
-      });
-    } else {
-      timer_.time("contacts", [&] { for_each(Space{}, n, contact_forces()); });
-    }
-    if (!world_.empty()) timer_.time("walls", [&] { for_each(Space{}, n, world_forces()); });
   }
 
   void reside_shape() {

@@ -75,7 +75,7 @@ bool bitwise_equal(const ParticleState<double>& a, const ParticleState<double>& 
   return same;
 }
 
-// Small systems run batches of steps in one launch (fused_steps.hpp), stopping at a step that
+// Small systems run batches of steps in one launch (exec/phases.hpp), stopping at a step that
 // needs a rebuild: the trajectory is bitwise that of single steps, through a loose bed's frequent
 // rebuilds. On the host it is also bitwise that of one launch per phase (the phase timer's path;
 // on the GPU the two compiled kernels may contract a*b + c into FMAs differently).

@@ -1,0 +1,165 @@
+// A time step as a list of named phases over particles [0, n), run in order:
+//   kernel_phase(name, f[, enabled])  f(i) for every i (a disabled phase is skipped)
+//   check_phase(name, f)              code = max_i f(i); nonzero stops the step after this phase,
+//                                     and the caller (the host) acts on it, then resumes the
+//                                     phases after it (a rebuild; later, a feed or a migration)
+// A phase reads what earlier phases wrote for any i and writes only its own i, so the list runs
+// the same way one launch per phase (run_phases: each phase timed by name) or many steps in one
+// launch (fused_steps: small systems, where a launch and a host round trip per phase would cost
+// more than the work). Adding a phase is adding it to the list: both runners take it as it is.
+//
+// fused_steps(space, n, k, phases, flags): up to k steps; flags[s] = 0 for a step that ran to the
+// end, else check_flag(index of the check that stopped it, its code), and the batch ends there
+// (just after that check), so the caller finishes that step from the next phase on. Cuda: one
+// block runs all k steps, the phases separated by __syncthreads(); no launch and no host round
+// trip per step, which is what a step of a few hundred particles costs otherwise (issue 6: the
+// 242-ball mill). Host: the per-phase runner, step after step.
+#pragma once
+#include <cstdint>
+#include <type_traits>
+#include "blaze/exec/launch.hpp"
+#include "blaze/exec/primitives.hpp"
+
+namespace blaze {
+
+// Up to this many particles the one-block path is used (16 particles per thread at most).
+constexpr Index kFusedMaxParticles = 4096;
+
+template <class F>
+struct KernelPhase {
+  const char* name;
+  F f;
+  bool enabled;
+};
+template <class F>
+struct CheckPhase {
+  const char* name;
+  F f;
+};
+template <class F>
+KernelPhase<F> kernel_phase(const char* name, const F& f, bool enabled = true) {
+  return {name, f, enabled};
+}
+template <class F>
+CheckPhase<F> check_phase(const char* name, const F& f) {
+  return {name, f};
+}
+template <class P>
+struct is_check_phase : std::false_type {};
+template <class F>
+struct is_check_phase<CheckPhase<F>> : std::true_type {};
+
+// The list: a trivially copyable recursive aggregate (std::tuple is not trivially copyable).
+template <class... P>
+struct Phases {
+  static constexpr int size = 0;
+};
+template <class H, class... T>
+struct Phases<H, T...> {
+  static constexpr int size = 1 + sizeof...(T);
+  H head;
+  Phases<T...> tail;
+};
+inline Phases<> make_phases() { return {}; }
+template <class H, class... T>
+Phases<H, T...> make_phases(const H& head, const T&... tail) {
+  return {head, make_phases(tail...)};
+}
+
+// A check's code (1..255) and its place in the list, as one flag.
+BLAZE_HD constexpr int check_flag(int index, int code) { return index * 256 + code; }
+struct PhaseStop {
+  int index = -1;  // the check that stopped the step; -1: the phases ran to the end
+  int code = 0;
+  static PhaseStop of_flag(int flag) { return flag ? PhaseStop{flag / 256, flag % 256} : PhaseStop{}; }
+};
+
+// A timer that only runs (the fused host path; PhaseTimer's interface).
+struct Untimed {
+  template <class F>
+  void time(const char*, F&& f) {
+    f();
+  }
+};
+
+// Phases with from <= index < to, one launch each, each timed under its name.
+template <class Space, class Timer>
+PhaseStop run_phases(Space, Index, const Phases<>&, int, int, Timer&, int = 0) {
+  return {};
+}
+template <class Space, class Timer, class H, class... T>
+PhaseStop run_phases(Space space, Index n, const Phases<H, T...>& p, int from, int to, Timer& timer, int index = 0) {
+  if (index >= to) return {};
+  if (index >= from) {
+    if constexpr (is_check_phase<H>::value) {
+      int code = 0;
+      timer.time(p.head.name, [&] { code = reduce_max(space, n, p.head.f, 0); });
+      if (code != 0) return {index, code};
+    } else if (p.head.enabled) {
+      timer.time(p.head.name, [&] { for_each(space, n, p.head.f); });
+    }
+  }
+  return run_phases(space, n, p.tail, from, to, timer, index + 1);
+}
+
+template <class... P>
+void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+  Untimed untimed;
+  for (std::uint64_t s = 0; s < k; ++s) {
+    const PhaseStop stop = run_phases(Host{}, n, phases, 0, Phases<P...>::size, untimed);
+    flags[s] = stop.index < 0 ? 0 : check_flag(stop.index, stop.code);
+    if (flags[s] != 0) return;
+  }
+}
+
+#if BLAZE_DEVICE_CODE
+constexpr int kFusedBlockSize = 256;
+
+// One phase of one step in the block; false: a check stopped the step (flag written).
+__device__ inline bool fused_phase(const Phases<>&, Index, int, int*, int*) { return true; }
+template <class H, class... T>
+__device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* flag, int* code) {
+  if constexpr (is_check_phase<H>::value) {
+    if (threadIdx.x == 0) *code = 0;
+    __syncthreads();
+    int c = 0;
+    for (Index i = threadIdx.x; i < n; i += blockDim.x) c = max(c, p.head.f(i));
+    atomicMax(code, c);
+    __syncthreads();
+    const int step_code = *code;  // the same in every thread: they stop together
+    __syncthreads();              // every thread has read it before a later check resets it
+    if (step_code != 0) {
+      if (threadIdx.x == 0) *flag = check_flag(index, step_code);
+      return false;
+    }
+  } else if (p.head.enabled) {
+    for (Index i = threadIdx.x; i < n; i += blockDim.x) p.head.f(i);
+    __syncthreads();
+  }
+  return fused_phase(p.tail, n, index + 1, flag, code);
+}
+
+template <class Phases>
+__global__ void __launch_bounds__(kFusedBlockSize) fused_steps_kernel(Index n, std::uint64_t k, const Phases* ph, int* flags) {
+  __shared__ int code;
+  for (std::uint64_t s = 0; s < k; ++s) {
+    if (threadIdx.x == 0) flags[s] = 0;
+    if (!fused_phase(*ph, n, 0, flags + s, &code)) return;
+  }
+}
+
+// The list is read from device memory: with a polyhedron shape table in several phases it
+// exceeds the kernel parameter space.
+template <class... P>
+void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+  using List = Phases<P...>;
+  static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
+  if (n <= 0 || k == 0) return;
+  static Buffer<List, Cuda> slot(1);  // one per instantiation, kept
+  copy_n(&phases, 1, slot.data(), Host{}, Cuda{});
+  fused_steps_kernel<<<1, kFusedBlockSize>>>(n, k, slot.data(), flags);
+  cuda_check(cudaGetLastError(), "fused_steps launch");
+}
+#endif
+
+}  // namespace blaze
