@@ -1,7 +1,8 @@
 // Elastic energy stored in the open contacts, and the contacts with world objects, per particle
 // (a diagnostic: Simulation::contact_energy() runs it only when a sample is taken, never inside
 // the step). One thread per particle i:
-//   pairs  sum over i's neighbours j > i of Law(m_i, m_j).stored_energy(collide(i, j))   [J]
+//   pairs  sum over i's neighbours j > i of Law(m_i, m_j).stored_energy(collide(i, j), state)  [J]
+//          (the state: i's copy of the pair's, for a tangential spring's 1/2 k_t |s|^2)
 //          (each pair once, from its lower index, with the very call ContactForces and
 //          PairForces make for that pair: collide(lower, higher) on the same list);
 //   walls  sum over the planar polygons and cylinders w of Law(m_i, m_w).stored_energy(
@@ -16,6 +17,7 @@
 #include "blaze/particles/particle_store.hpp"
 #include "blaze/world/world.hpp"
 #include "kernels/broad_phase_kernels.hpp"
+#include "kernels/contact_history.hpp"
 
 namespace blaze {
 
@@ -36,6 +38,8 @@ struct StoredContactEnergy {
   WorldView<Real> world;
   PairTable<Law> laws;
   ContactEnergySlots out;
+  PairHistoryView<Real, Law::State::kReals> history;  // a tangential spring's energy is in the state
+  WallHistoryView<Real, Law::State::kReals> wall_history;
 
   BLAZE_HD void operator()(Index i) const {
     const auto bi = shape.body(p, i);
@@ -47,15 +51,22 @@ struct StoredContactEnergy {
       const Index j = list.at(k, i);
       if (j < i) continue;  // j's thread holds this pair
       const ContactGeometry<Real> g = shape.collide(bi, shape.body(p, j));
-      if (g.touching) pairs += laws(mi, p.material[j]).stored_energy(g);
+      if (!g.touching) continue;
+      const auto state = Law::kHistory ? history.load(list.offset(k, i)) : Law::State::zero();
+      pairs += laws(mi, p.material[j]).stored_energy(g, state);
     }
-    const auto wall = [&](const ContactGeometry<Real>& g, int material) {
+    const auto wall = [&](const ContactGeometry<Real>& g, int material, int w) {
       if (!g.touching) return;
-      walls += laws(mi, material).stored_energy(g);
+      auto state = Law::State::zero();
+      if constexpr (Law::kHistory)
+        for (int h = 0; h < wall_history.slots; ++h)
+          if (wall_history.object[wall_history.at(h, i)] == w) state = wall_history.load(h, i);
+      walls += laws(mi, material).stored_energy(g, state);
       ++touched;
     };
-    for (int k = 0; k < world.polygon_count; ++k) wall(shape.collide_world(bi, world.polygons[k]), world.polygons[k].material);
-    for (int k = 0; k < world.cylinder_count; ++k) wall(shape.collide_world(bi, world.cylinders[k]), world.cylinders[k].material);
+    int w = 0;
+    for (int k = 0; k < world.polygon_count; ++k, ++w) wall(shape.collide_world(bi, world.polygons[k]), world.polygons[k].material, w);
+    for (int k = 0; k < world.cylinder_count; ++k, ++w) wall(shape.collide_world(bi, world.cylinders[k]), world.cylinders[k].material, w);
     out.pairs[i] = pairs;
     out.walls[i] = walls;
     out.wall_contacts[i] = touched;

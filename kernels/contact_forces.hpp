@@ -4,11 +4,14 @@
 // no atomics are needed and the summation order is the same on every backend. Both sides call
 // collide(lower index, higher index) and the higher one flips the normal, so the two see exactly
 // the same geometry (Newton's third law holds to the last bit of the geometry).
+// A law with history (contact_state.hpp) loads each touching pair's state from i's own copy
+// (contact_history.hpp), updates it and stores it back; an open pair's state is forgotten.
 // With Features::statistics each particle also counts its vertex-face and edge-edge contacts;
 // with Features::monitor it keeps its deepest overlap / radius (reset by the host).
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "kernels/broad_phase_kernels.hpp"
+#include "kernels/contact_history.hpp"
 #include "kernels/contact_pair.hpp"
 
 namespace blaze {
@@ -22,6 +25,8 @@ struct ContactForces {
   NeighbourView list;
   PairTable<Law> laws;
   ContactStats stats;
+  PairHistoryView<Real, Law::State::kReals> history;  // i's own copy of each pair's state (contact_history.hpp)
+  Real dt;
 
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
@@ -37,14 +42,16 @@ struct ContactForces {
         g = shape.collide(bj, a.body);
         g.normal = -g.normal;
       }
-      if (!g.touching) continue;
-      sums.touch(g.kind == ContactKind::edge_edge, g.overlap);
-      if constexpr (is_patch_geometry_v<decltype(g)>) {
-        const ContactWrench<Real> w = pair_force<Kinematics, Features>(laws, p, a, j, bj, g);
-        sums.add(w.force, g.point - a.body.x, w.moment);
-      } else {
-        sums.add(pair_force<Kinematics, Features>(laws, p, a, j, bj, g), g.point - a.body.x);
+      const std::size_t s = list.offset(k, i);
+      if (!g.touching) {
+        if constexpr (Law::kHistory) history.forget(s);
+        continue;
       }
+      sums.touch(g.kind == ContactKind::edge_edge, g.overlap);
+      auto state = Law::kHistory ? history.load(s) : typename Law::State{};
+      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
+      if constexpr (Law::kHistory) history.store(s, state);
+      sums.template add<has_moment_v<Law, decltype(g)>>(c, g.point - a.body.x);
     }
     sums.store(p, stats, i);
   }

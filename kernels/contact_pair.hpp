@@ -2,7 +2,7 @@
 // shared by the kernel that evaluates each pair from both sides (contact_forces.hpp) and by the
 // pair and gather kernels that evaluate it once (pair_forces.hpp), so that the two paths cannot
 // drift apart (they agree bitwise on the host: verification/test_pair_evaluation.cpp).
-//   F_ij = law(m_i, m_j).force(geometry, v_rel, m_eff)           [N]
+//   F_ij = law(m_i, m_j).evaluate(geometry, {v_rel, w_i - w_j, m_eff}, state, dt).force  [N]
 //   v_rel = Kinematics::relative(v_i, w_i, p - x_i, v_j, w_j, p - x_j)  at the contact point p [m/s]
 //   m_eff = 1 / (1/m_i + 1/m_j)                                   [kg]
 //   T_i  += (p - x_i) x F_ij (thesis eq. 2.4)                     [N m]
@@ -41,29 +41,29 @@ BLAZE_HD_INLINE auto pair_side(const Shape& shape, const ParticleView<Real>& p, 
                               p.material[i]};
 }
 
-// F_ij on i for the geometry g of i and j (normal from i towards j, contact_geometry.hpp).
-template <class Kinematics, class Features, class Law, class Real, class Body>
-BLAZE_HD_INLINE Vec3<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
-                                      const PairSide<Real, Body>& a, Index j, const Body& bj,
-                                      const ContactGeometry<Real>& g) {
-  const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
-  const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
-  const Real m_eff = Real(1) / (a.inv_mass + p.inv_mass[j]);
-  return laws(a.material, p.material[j]).force(g, v_rel, m_eff);
-}
-
-// F_ij and its moment about g.point for a contact patch (contact_patch.hpp), each point with its
-// own relative velocity.
-template <class Kinematics, class Features, class Law, class Real, class Body>
-BLAZE_HD_INLINE ContactWrench<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
-                                               const PairSide<Real, Body>& a, Index j, const Body& bj,
-                                               const PatchGeometry<Real>& g) {
+// F_ij on i (and a moment on i: a patch's about the contact point, a rolling resistance) for the
+// geometry g of i and j (normal from i towards j, contact_geometry.hpp), with the contact's state
+// (updated; laws without history have none).
+template <class Kinematics, class Features, class Law, class Real, class Body, class Geometry>
+BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
+                                              const PairSide<Real, Body>& a, Index j, const Body& bj, const Geometry& g,
+                                              typename Law::State& state, Real dt) {
   const Vec3<Real> vj = p.velocity.get(j);
   const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
-  const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(a.v, a.w, x - a.body.x, vj, wj, x - bj.x); };
   const Real m_eff = Real(1) / (a.inv_mass + p.inv_mass[j]);
-  return patch_force(laws(a.material, p.material[j]), g, v_rel, m_eff);
+  const Law& law = laws(a.material, p.material[j]);
+  if constexpr (is_patch_geometry_v<Geometry>) {
+    const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(a.v, a.w, x - a.body.x, vj, wj, x - bj.x); };
+    return contact_patch_force(law, g, v_rel, a.w - wj, m_eff, state, dt);
+  } else {
+    const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, vj, wj, g.point - bj.x);
+    return law.evaluate(g, {v_rel, a.w - wj, m_eff}, state, dt);
+  }
 }
+
+// Does a contact's force come with a moment (a patch, or a law with rolling resistance)?
+template <class Law, class Geometry>
+inline constexpr bool has_moment_v = is_patch_geometry_v<Geometry> || Law::kRolling;
 
 // Particle i's sums over its contacts, added in list order and stored once: force, torque
 // (Features::rotation), deepest overlap / radius (Features::monitor, kept as the maximum with
@@ -88,6 +88,12 @@ struct ContactSums {
   BLAZE_HD_INLINE void add(const Vec3<Real>& fij, const Vec3<Real>& r, const Vec3<Real>& m) {
     f += fij;
     if constexpr (Features::rotation) t += cross(r, fij) + m;
+  }
+  // A law's force and, when it has one (Moment), its moment.
+  template <bool Moment>
+  BLAZE_HD_INLINE void add(const ContactForce<Real>& c, const Vec3<Real>& r) {
+    if constexpr (Moment) add(c.force, r, c.moment);
+    else add(c.force, r);
   }
   BLAZE_HD_INLINE void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
     p.force.set(i, f);

@@ -20,6 +20,7 @@
 #include <type_traits>
 #include "blaze/exec/launch.hpp"
 #include "kernels/broad_phase_kernels.hpp"
+#include "kernels/contact_history.hpp"
 #include "kernels/contact_pair.hpp"
 
 namespace blaze {
@@ -48,6 +49,8 @@ struct PairForces {
   NeighbourView list;
   PairTable<Law> laws;
   PairSlots<Real> slots;
+  PairHistoryView<Real, Law::State::kReals> history;  // the lower index's copy (contact_history.hpp)
+  Real dt;
 
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
@@ -60,17 +63,16 @@ struct PairForces {
       const auto g = shape.collide(a.body, bj);
       if (!g.touching) {
         slots.state[s] = 0;
+        if constexpr (Law::kHistory) history.forget(s);
         continue;
       }
       slots.state[s] = g.kind == ContactKind::edge_edge ? 2 : 1;
       if constexpr (Features::monitor) slots.overlap[s] = g.overlap;
-      if constexpr (is_patch_geometry_v<std::decay_t<decltype(g)>>) {
-        const ContactWrench<Real> w = pair_force<Kinematics, Features>(laws, p, a, j, bj, g);
-        slots.set(slots.force, s, w.force);
-        if constexpr (Features::rotation) slots.set(slots.moment, s, w.moment);
-      } else {
-        slots.set(slots.force, s, pair_force<Kinematics, Features>(laws, p, a, j, bj, g));
-      }
+      auto state = Law::kHistory ? history.load(s) : typename Law::State{};
+      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
+      if constexpr (Law::kHistory) history.store(s, state);
+      slots.set(slots.force, s, c.force);
+      if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>> && Features::rotation) slots.set(slots.moment, s, c.moment);
       if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
     }
   }

@@ -1,6 +1,8 @@
 // Particle-world contact forces (thesis Algorithm 2.1, line 6), added to the particle's force and
 // torque. Walls are immovable here (infinite mass, zero velocity): m_eff = m_i. A contact with a
-// patch (contact_patch.hpp) adds the patch's moment about the contact point to the torque.
+// patch (contact_patch.hpp) adds the patch's moment about the contact point to the torque. A law
+// with history keeps each wall contact's state in a slot of the particle keyed by the object
+// (contact_history.hpp): found or claimed when touching, freed when the contact opens.
 #pragma once
 #include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
@@ -10,6 +12,8 @@
 #include "blaze/sim/features.hpp"
 #include "blaze/world/world.hpp"
 #include "blaze/particles/particle_store.hpp"
+#include "kernels/contact_history.hpp"
+#include "kernels/contact_pair.hpp"
 
 namespace blaze {
 
@@ -22,6 +26,8 @@ struct WorldForces {
   ParticleView<Real> p;
   WorldView<Real> world;
   PairTable<Law> laws;
+  WallHistoryView<Real, Law::State::kReals> history;  // per-particle slots keyed by the object (contact_history.hpp)
+  Real dt;
 
   BLAZE_HD void operator()(Index i) const {
     const auto body = shape.body(p, i);
@@ -31,30 +37,47 @@ struct WorldForces {
     bool touched = false;
     Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
     Real deepest = 0;
-    const auto apply = [&](const auto& g, int material) {
+    unsigned seen = 0;  // slots of objects touched this step
+    // Object w (polygons first, then cylinders: the world's object index).
+    const auto apply = [&](const auto& g, int material, int w) {
       if (!g.touching) return;
       if (!touched) f = p.force.get(i), touched = true;
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - body.x;
       const Vec3<Real> zero{0, 0, 0};
-      const Vec3<Real> w = Features::rotation ? p.angular_velocity.get(i) : zero;
+      const Vec3<Real> wi = Features::rotation ? p.angular_velocity.get(i) : zero;
       const Vec3<Real> vi = p.velocity.get(i);
+      const Law& law = laws(p.material[i], material);
+      const Real m_eff = Real(1) / p.inv_mass[i];
+      int h = -1;
+      auto state = typename Law::State{};
+      if constexpr (Law::kHistory) {
+        h = history.slot(i, w);
+        state = h >= 0 ? history.load(h, i) : Law::State::zero();
+        if (h < 0) history.overflow[i] = 1;  // ran without its state: the store grows at the next rebuild
+        else seen |= 1u << h;
+      }
+      ContactForce<Real> c;
       if constexpr (is_patch_geometry_v<std::decay_t<decltype(g)>>) {  // contact_patch.hpp
-        const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(vi, w, x - body.x, zero, zero, zero); };
-        const ContactWrench<Real> fw = patch_force(laws(p.material[i], material), g, v_rel, Real(1) / p.inv_mass[i]);
-        f += fw.force;
-        if constexpr (Features::rotation) t += cross(ri, fw.force) + fw.moment;
+        const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(vi, wi, x - body.x, zero, zero, zero); };
+        c = contact_patch_force(law, g, v_rel, wi, m_eff, state, dt);
       } else {
-        const Vec3<Real> v_rel = Kinematics::relative(vi, w, ri, zero, zero, zero);
-        const Vec3<Real> fw = laws(p.material[i], material).force(g, v_rel, Real(1) / p.inv_mass[i]);
-        f += fw;
-        if constexpr (Features::rotation) t += cross(ri, fw);
+        c = law.evaluate(g, {Kinematics::relative(vi, wi, ri, zero, zero, zero), wi, m_eff}, state, dt);
+      }
+      if constexpr (Law::kHistory)
+        if (h >= 0) history.store(h, i, state);
+      f += c.force;
+      if constexpr (Features::rotation) {
+        if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>>) t += cross(ri, c.force) + c.moment;
+        else t += cross(ri, c.force);
       }
     };
-    for (int k = 0; k < world.polygon_count; ++k)
-      apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material);
-    for (int k = 0; k < world.cylinder_count; ++k)
-      apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material);
+    int w = 0;
+    for (int k = 0; k < world.polygon_count; ++k, ++w)
+      apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material, w);
+    for (int k = 0; k < world.cylinder_count; ++k, ++w)
+      apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material, w);
+    if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);

@@ -101,7 +101,8 @@ class BroadPhase {
   // Device memory held by the broad phase (grid cells, sort buffers, neighbour list), bytes.
   std::size_t bytes() const {
     std::size_t b = (keys_.size() + cell_start_.size() + cell_end_.size()) * sizeof(std::uint32_t);
-    b += (order_.size() + list_.size() + count_.size() + reverse_.size()) * sizeof(Index);
+    b += (order_.size() + list_.size() + count_.size() + reverse_.size() + previous_list_.size() + previous_count_.size()) *
+         sizeof(Index);
     for (const auto& c : reference_) b += c.size() * sizeof(Real);
     return b;
   }
@@ -112,12 +113,25 @@ class BroadPhase {
 
   // Keep the list's reverse index from the next build on (pairs evaluated once).
   void keep_reverse_index() { with_reverse_ = true; }
+  // Keep the previous list through each build (a contact store carries its states over by it).
+  void keep_previous_list() { with_previous_ = true; }
+  // The list before the last build, in the order before its sort (keep_previous_list()).
+  NeighbourView previous_neighbours() {
+    return {previous_list_.data(), previous_count_.data(), previous_stride_, previous_capacity_, nullptr};
+  }
+  // The last rebuild's sort: particle i now was particle order()[i] before it.
+  const Index* order() const { return order_.data(); }
 
  private:
   static Vec3Field<Real> field(Buffer<Real, Space> (&f)[3]) { return {f[0].data(), f[1].data(), f[2].data()}; }
 
   void build_list(ParticleStore<Real, Space>& store) {
     auto p = store.view();
+    if (with_previous_) {
+      list_.swap(previous_list_);
+      count_.swap(previous_count_);
+      previous_stride_ = stride_, previous_capacity_ = capacity_;
+    }
     stride_ = p.n;
     count_.resize(std::max<std::size_t>(count_.size(), p.n));
     for (;;) {
@@ -146,8 +160,9 @@ class BroadPhase {
   Buffer<std::uint32_t, Space> keys_;
   Buffer<Index, Space> order_;
   Buffer<std::uint32_t, Space> cell_start_, cell_end_;
-  Buffer<Index, Space> list_, count_, reverse_;
-  bool with_reverse_ = false;
+  Buffer<Index, Space> list_, count_, reverse_, previous_list_, previous_count_;
+  bool with_reverse_ = false, with_previous_ = false;
+  Index previous_stride_ = 0, previous_capacity_ = 0;
   Buffer<Real, Space> reference_[3];
   Index stride_ = 0;
   Index capacity_ = 16;

@@ -14,6 +14,7 @@
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/exec/phases.hpp"
 #include "pipeline/broad_phase.hpp"
+#include "pipeline/contact_store.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/sim/snapshot.hpp"
 #include "blaze/world/world.hpp"
@@ -89,8 +90,11 @@ class Simulation {
   using Real = typename Law::real_type;
   // Does the shape report contact patches (contact_patch.hpp)? Then pairs once keep their moments.
   using ShapeBody = decltype(std::declval<const Shape&>().body(std::declval<const ParticleView<Real>&>(), Index{}));
-  static constexpr bool kPatches = is_patch_geometry_v<std::decay_t<decltype(
-      std::declval<const Shape&>().collide(std::declval<const ShapeBody&>(), std::declval<const ShapeBody&>()))>>;
+  using PairGeometry = std::decay_t<decltype(
+      std::declval<const Shape&>().collide(std::declval<const ShapeBody&>(), std::declval<const ShapeBody&>()))>;
+  static constexpr bool kPatches = is_patch_geometry_v<PairGeometry>;
+  // Pair forces come with moments (patches, rolling resistance): pairs once keep them too.
+  static constexpr bool kMoments = has_moment_v<Law, PairGeometry>;
   using features = Features;
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
@@ -104,6 +108,7 @@ class Simulation {
     world_.upload(world);
     initial_count_ = store_.size();
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
+    configure_contacts(world);
     first_build();
     run_phases(Space{}, store_.size(), step_phases(), kFirstForcePhase, kPostForcePhase, timer_);
     for_each(Space{}, store_.size(), integrate<Stage::prime>());
@@ -128,16 +133,19 @@ class Simulation {
     removed_mass_ = snap.removed_mass;
     removed_energy_ = snap.removed_energy;
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
+    configure_contacts(world);
     first_build();
+    contacts_.restore(snap.contacts, store_.download_id(), broad_.neighbours());
   }
 
   // Rebuilds the neighbour list now (moving force and torque along), then takes the snapshot. The
   // extra rebuild is part of the run's history: a run that writes checkpoints every T differs in
   // rounding from one that writes none, and a restart from any of them matches the former exactly.
   SimulationSnapshot<Real> snapshot() {
-    apply_removal(broad_.rebuild(store_, timer_, params_.gravity, true));
+    rebuild(true);
     SimulationSnapshot<Real> out;
     out.store = store_.snapshot();
+    out.contacts = contacts_.snapshot(out.store.id, broad_.neighbours());
     out.steps = steps_;
     out.initial_count = initial_count_;
     out.removed_count = removed_count_;
@@ -149,7 +157,7 @@ class Simulation {
   // Rebuilds the neighbour list now (hash, sort, reorder, cells and list), as a step does when a
   // particle has moved half the skin (forces and torques move along, as between steps they are
   // still needed); benchmarks time the broad phase with it.
-  void rebuild_neighbours() { apply_removal(broad_.rebuild(store_, timer_, params_.gravity, true)); }
+  void rebuild_neighbours() { rebuild(true); }
 
   // One step. Small systems (fused()) take it through the same one-launch kernel that batches use,
   // so a trajectory is bitwise the same however its steps were grouped (on the GPU, the fused
@@ -197,7 +205,8 @@ class Simulation {
       b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
     energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
     const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
-    for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), world_.view(), laws_, slots});
+    for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), world_.view(), laws_, slots,
+                                                         contacts_.pairs(), contacts_.walls()});
     ContactEnergy e;
     for (double x : to_host(energy_pairs_, n)) e.pairs += x;  // index order: deterministic
     for (double x : to_host(energy_walls_, n)) e.walls += x;
@@ -256,11 +265,11 @@ class Simulation {
     for (Index c : count) total += c;
     return count.empty() ? 0 : total / static_cast<double>(count.size());
   }
-  // Particle arrays, broad phase (not counting the sorter's scratch) and pair slots, bytes.
+  // Particle arrays, broad phase (not counting the sorter's scratch), pair slots and contact store, bytes.
   std::size_t memory_bytes() const {
     std::size_t slots = slot_state_.size() + slot_overlap_.size() * sizeof(Real);
     for (const auto& b : slot_reals_) slots += b.size() * sizeof(Real);
-    return store_.bytes() + broad_.bytes() + slots;
+    return store_.bytes() + broad_.bytes() + slots + contacts_.bytes();
   }
 
  private:
@@ -318,8 +327,8 @@ class Simulation {
         kernel_phase("integrate", integrate<Stage::pre_force>()),
         check_phase("rebuild-check", broad_.rebuild_check_functor(store_)),
         kernel_phase("contacts", contact_forces(), !once),
-        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots}, once),
-        kernel_phase("contacts", GatherPairForces<Real, Features, kPatches>{p, nl, slots, contact_stats()}, once),
+        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), params_.dt}, once),
+        kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats()}, once),
         kernel_phase("walls", world_forces(), !world_.empty()),
         kernel_phase("integrate", integrate<Stage::post_force>()));
     static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");
@@ -342,7 +351,24 @@ class Simulation {
   void on_check(const PhaseStop& stop) {
     if (stop.index != kRebuildCheck) throw std::logic_error("simulation: a check phase without a handler");
     if (stop.code == 2) throw_non_finite(steps_ + 1);
-    apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
+    rebuild(false);
+  }
+  // Hash, sort, reorder, new list (broad_phase.hpp), and the contact store carried over to it.
+  // with_forces: force and torque move too (between steps).
+  void rebuild(bool with_forces) {
+    apply_removal(broad_.rebuild(store_, timer_, params_.gravity, with_forces));
+    if constexpr (Law::kHistory)
+      timer_.time("neighbours", [&] {
+        contacts_.after_rebuild(broad_.neighbours(), broad_.previous_neighbours(), broad_.order(), store_.size());
+      });
+  }
+  // The store's reals per contact (all the law's state), and its wall slots (one per world object
+  // up to 3 to begin with); the broad phase keeps the previous list for the carry-over.
+  void configure_contacts(const World<Real>& world) {
+    if constexpr (Law::kHistory) {
+      contacts_.configure(Law::State::kReals, static_cast<int>(world.polygons.size() + world.cylinders.size()));
+      broad_.keep_previous_list();
+    }
   }
 
   // A batch of K steps in one launch with no host round trip per step (phases.hpp): the batch
@@ -378,6 +404,7 @@ class Simulation {
   void first_build() {
     if (broad_.rebuild_check(store_) == 2) throw_non_finite(steps_);
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
+    contacts_.clear(broad_.neighbours(), store_.size());
   }
   template <class Removed>
   void apply_removal(const Removed& removed) {
@@ -418,16 +445,18 @@ class Simulation {
     return {nullptr, nullptr};
   }
   ContactForces<Shape, Law, Kinematics, Features> contact_forces() {
-    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats()};
+    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), params_.dt};
   }
-  WorldForces<Shape, Law, Kinematics, Features> world_forces() { return {shape_, store_.view(), world_.view(), laws_}; }
+  WorldForces<Shape, Law, Kinematics, Features> world_forces() {
+    return {shape_, store_.view(), world_.view(), laws_, contacts_.walls(), params_.dt};
+  }
 
   // Pairs once: the slots, one per list entry (grown with the list, never shrunk).
   PairSlots<Real> pair_slots() {
     const NeighbourView nl = broad_.neighbours();
     const std::size_t entries = static_cast<std::size_t>(nl.capacity) * static_cast<std::size_t>(nl.stride);
     // Contact points only with rotation; patch moments only with rotation and patches.
-    for (int b = 0; b < (Features::rotation ? (kPatches ? 9 : 6) : 3); ++b)
+    for (int b = 0; b < (Features::rotation ? (kMoments ? 9 : 6) : 3); ++b)
       slot_reals_[b].resize(std::max(slot_reals_[b].size(), entries));
     slot_state_.resize(std::max(slot_state_.size(), entries));
     if constexpr (Features::monitor) slot_overlap_.resize(std::max(slot_overlap_.size(), entries));
@@ -435,7 +464,7 @@ class Simulation {
     for (int d = 0; d < 3; ++d) {
       s.force[d] = slot_reals_[d].data();
       s.point[d] = slot_reals_[3 + d].data();
-      s.moment[d] = kPatches && Features::rotation ? slot_reals_[6 + d].data() : nullptr;
+      s.moment[d] = kMoments && Features::rotation ? slot_reals_[6 + d].data() : nullptr;
     }
     s.state = slot_state_.data();
     s.overlap = Features::monitor ? slot_overlap_.data() : nullptr;
@@ -461,6 +490,7 @@ class Simulation {
   Buffer<std::uint8_t, Space> slot_state_;
   Buffer<Real, Space> slot_overlap_;
   ParticleStore<Real, Space> store_;
+  ContactStore<Real, Law::State::kReals, Space> contacts_;  // laws with history (contact_store.hpp)
   WorldStore<Real, Space> world_;
   BroadPhase<Real, Space> broad_;
   PhaseTimer<Space> timer_;

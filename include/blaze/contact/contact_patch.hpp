@@ -28,6 +28,7 @@
 #include <type_traits>
 #include "blaze/config.hpp"
 #include "blaze/contact/contact_geometry.hpp"
+#include "blaze/laws/contact_law.hpp"
 
 namespace blaze {
 
@@ -84,6 +85,45 @@ BLAZE_HD_INLINE ContactWrench<Real> patch_force(const Law& law, const PatchGeome
     w.moment += cross(g.patch.point[k] - g.point, f);
   }
   return w;
+}
+
+// A patch under a law with history (a tangential spring, one state per contact, keyed by the
+// pair): the normal force at each point as above, the spring once at the patch centre p with the
+// total normal force and the centre's slip (its force acts at p: no moment about p), and the
+// tangential damping of each point's slip relative to the centre's, w_k c_t (v_t,k - v_t,p),
+// which sums to zero force and damps turning about the normal (torsion) and rocking:
+//   F = sum_k -w_k F_n(delta, v_n,k) n + F_t(spring; sum_k w_k F_n,k, v_t,p) - sum_k w_k c_t (v_t,k - v_t,p)
+//   M = sum_k (p_k - p) x (-w_k F_n,k n - w_k c_t (v_t,k - v_t,p))
+// A twist is thus resisted viscously (a steady torque about n turns the body slowly), not by a
+// torsional spring: a contact turning about its normal keeps no twist in its state.
+template <class Law, class Real, class RelativeVelocity>
+BLAZE_HD_INLINE ContactForce<Real> contact_patch_force(const Law& law, const PatchGeometry<Real>& g, const RelativeVelocity& v_rel,
+                                                      const Vec3<Real>& w_rel, Real m_eff, typename Law::State& state, Real dt) {
+  if constexpr (!Law::kHistory) {
+    const ContactWrench<Real> w = patch_force(law, g, v_rel, m_eff);
+    return {w.force, w.moment, false};
+  } else {
+    const Vec3<Real> v_c = v_rel(g.point);
+    if (g.patch.count <= 1) return law.evaluate(g, {v_c, w_rel, m_eff}, state, dt);
+    const Vec3<Real> n = g.normal;
+    const Vec3<Real> slip_c = v_c - dot(v_c, n) * n;
+    const Real c_t = law.tangential.damping(g.overlap, g.r_eff, m_eff);
+    Real f_n = 0;
+    Vec3<Real> force{0, 0, 0}, moment{0, 0, 0};
+    for (int k = 0; k < g.patch.count; ++k) {
+      const Vec3<Real> v = v_rel(g.patch.point[k]);
+      const Real v_n = dot(v, n);
+      const Real w = g.patch.weight[k];
+      const Real f_nk = w * law.normal.normal_force(g.overlap, v_n, m_eff, g.r_eff);
+      const Vec3<Real> f = n * (-f_nk) - ((v - v_n * n) - slip_c) * (w * c_t);
+      f_n += f_nk;
+      force += f;
+      moment += cross(g.patch.point[k] - g.point, f);
+    }
+    const TangentialInput<Real> in{n, g.overlap, g.r_eff, slip_c, f_n, m_eff, dt};
+    const TangentialForce<Real> t = law.tangential.force(in, state, 0);
+    return {force + t.force, moment, t.sliding};
+  }
 }
 
 }  // namespace blaze

@@ -6,7 +6,9 @@
 //   u64 FNV-1a 64 of the payload
 //   payload: u64 steps, i64 initial count, i64 removed count, f64 removed mass, f64 removed energy,
 //            u32 real arrays, each u64 length + values; u64 n, n material bytes, n type bytes,
-//            n ids (i32); u64 text length + text
+//            n ids (i32); contact store: u32 reals per contact, pair ids (u64 length + i32
+//            pairs), pair values (u64 length + reals), wall ids, wall objects (i16), wall values;
+//            u64 text length + text
 // Writing goes to <path>.tmp, is flushed and fsync'ed, then renamed over <path>: a run killed
 // mid-write (even by SIGKILL) leaves the previous checkpoint whole. Reading rejects a wrong magic,
 // version or precision, a truncated file and a checksum mismatch, each with a message naming the
@@ -33,7 +35,7 @@ struct CheckpointError : std::runtime_error {
 namespace checkpoint_detail {
 
 constexpr char kMagic[8] = {'B', 'L', 'Z', 'C', 'K', 'P', 'T', '\0'};
-constexpr std::uint32_t kVersion = 2;  // 2: the removed particles' energy
+constexpr std::uint32_t kVersion = 3;  // 2: the removed particles' energy; 3: the contact store
 
 inline std::uint64_t fnv1a(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -102,6 +104,12 @@ void write_checkpoint(const std::string& path, const SimulationSnapshot<Real>& s
   payload.append(reinterpret_cast<const char*>(s.store.material.data()), s.store.material.size());
   payload.append(reinterpret_cast<const char*>(s.store.type.data()), s.store.type.size());
   payload.append(reinterpret_cast<const char*>(s.store.id.data()), s.store.id.size() * sizeof(Index));
+  put(payload, static_cast<std::uint32_t>(s.contacts.used));
+  put_array(payload, s.contacts.pair_ids);
+  put_array(payload, s.contacts.pair_values);
+  put_array(payload, s.contacts.wall_ids);
+  put_array(payload, s.contacts.wall_objects);
+  put_array(payload, s.contacts.wall_values);
   put(payload, static_cast<std::uint64_t>(text.size()));
   payload += text;
 
@@ -180,6 +188,18 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
   s.store.material = r.array<std::uint8_t>(n);
   s.store.type = r.array<std::uint8_t>(n);
   s.store.id = r.array<Index>(n);
+  auto& ct = s.contacts;
+  ct.used = static_cast<int>(r.get<std::uint32_t>());
+  if (ct.used > 64) r.fail("too many reals per contact");
+  ct.pair_ids = r.array<Index>();
+  ct.pair_values = r.array<Real>();
+  ct.wall_ids = r.array<Index>();
+  ct.wall_objects = r.array<std::int16_t>();
+  ct.wall_values = r.array<Real>();
+  const auto per = static_cast<std::size_t>(ct.used);
+  if (ct.pair_ids.size() % 2 != 0 || ct.pair_values.size() != ct.pair_ids.size() / 2 * per ||
+      ct.wall_objects.size() != ct.wall_ids.size() || ct.wall_values.size() != ct.wall_ids.size() * per)
+    r.fail("the contact store's arrays disagree in length");
   const auto text = r.array<char>();
   c.text.assign(text.begin(), text.end());
   if (!r.done()) r.fail("bytes after the end");

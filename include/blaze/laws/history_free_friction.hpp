@@ -8,12 +8,13 @@
 // impacts, mu sliding. No spring: nothing is remembered between steps.
 #pragma once
 #include <stdexcept>
-#include "blaze/core/vec3.hpp"
+#include "blaze/laws/tangential_spring.hpp"
 
 namespace blaze {
 
 template <class Real>
 struct HistoryFreeFriction {
+  static constexpr int kStateReals = 0;
   Real mu;  // -
   Real kt;  // kg/s
 
@@ -33,12 +34,22 @@ struct HistoryFreeFriction {
     if (kt * kt * speed2 <= cap * cap) return v_t * (-kt);
     return v_t * (-cap / sqrt_r(speed2));
   }
+  // The tangential-law interface (tangential_spring.hpp); no state.
+  template <class State>
+  BLAZE_HD TangentialForce<Real> force(const TangentialInput<Real>& in, State&, int) const {
+    return {tangential_force(in.v_t, in.f_n), false};
+  }
 };
 
 // Frictionless contacts: the tangential force is zero and compiles to nothing.
 template <class Real>
 struct NoFriction {
+  static constexpr int kStateReals = 0;
   BLAZE_HD Vec3<Real> tangential_force(const Vec3<Real>&, Real) const { return {0, 0, 0}; }
+  template <class State>
+  BLAZE_HD TangentialForce<Real> force(const TangentialInput<Real>&, State&, int) const {
+    return {{0, 0, 0}, false};
+  }
 };
 
 }  // namespace blaze

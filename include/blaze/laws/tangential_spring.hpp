@@ -1,0 +1,135 @@
+// Tangential spring with a Coulomb limit: the contact's history (Cundall & Strack 1979 for the
+// linear law; Mindlin & Deresiewicz 1953, no-slip stiffness, for Hertz; the form of LIGGGHTS
+// hooke/history and hertz/history and of Chrono DEM-Engine). Per step, for a touching contact:
+//
+//   s  <- |s| (s - (s.n) n) / |s - (s.n) n|      the stored spring turned into the current tangent
+//                                                plane (the normal has turned), its length kept
+//   s  <- s + v_t dt                             tangential displacement, m
+//   F  =  -k_t s - c_t v_t                       trial tangential force on i, N
+//   |F| > mu F_n:  F <- mu F_n F / |F|,   s <- -(F + c_t v_t) / k_t     (sliding: spring truncated)
+//   F_n <= 0 (a pulling dashpot):  F = 0, s = 0 (a contact that pulls transmits no friction)
+//
+//   k_t = k_0 + k_hat sqrt(R* delta)   N/m. Linear law: k_0 given (default 2/7 k_n, which gives a
+//          sphere's tangential oscillation the normal one's period), k_hat = 0. Hertz (Mindlin):
+//          k_0 = 0, k_hat = 8 G*, 1/G* = (2 - nu_1)/G_1 + (2 - nu_2)/G_2, G = E / (2 (1 + nu)) Pa.
+//   c_t = beta_t sqrt(k_t m*)          kg/s, from the pair's restitution e: linear beta_t =
+//          -2 ln e / sqrt(ln^2 e + pi^2) (the normal law's beta); Hertz beta_t = sqrt(5/6) times
+//          that (LIGGGHTS: gamma_t = -2 sqrt(5/6) beta sqrt(S_t m*), S_t = k_t).
+//   Stored elastic energy 1/2 k_t |s|^2 (J).
+//
+// v_t: tangential slip velocity at the contact point (m/s); n: contact normal; F_n: normal force
+// (N, > 0 pushing); dt: the time step (s). The state is the spring s (3 reals, m); each side of a
+// pair keeps its own copy, the exact negation of the other's (every operation above is odd in
+// (s, v_t, n) together, so the two stay mirrored to the last bit). A contact is "sliding" when
+// the Coulomb limit truncated it this step, "sticking" otherwise.
+//
+// Stiffness and total force (F = -k_t(delta) s) rather than force increments: when delta falls,
+// F falls with k_t; the spring's rotation keeps |s|, so it neither stores nor releases energy.
+#pragma once
+#include <cmath>
+#include <stdexcept>
+#include "blaze/contact/contact_geometry.hpp"
+#include "blaze/laws/contact_state.hpp"
+
+namespace blaze {
+
+// What a tangential law is given: the slip, the normal force, the effective mass, the step.
+template <class Real>
+struct TangentialInput {
+  Vec3<Real> normal;  // -, from i towards j
+  Real overlap;       // m
+  Real r_eff;         // m
+  Vec3<Real> v_t;     // m/s
+  Real f_n;           // N
+  Real m_eff;         // kg
+  Real dt;            // s
+};
+
+// What it gives back: the force on i and whether the Coulomb limit acted.
+template <class Real>
+struct TangentialForce {
+  Vec3<Real> force;  // N
+  bool sliding;
+};
+
+template <class Real>
+struct TangentialSpring {
+  static constexpr int kStateReals = 3;  // the spring s, m
+  Real mu;        // -, Coulomb coefficient
+  Real k0;        // N/m
+  Real k_hat;     // Pa (8 G*), times sqrt(R* delta)
+  Real beta;      // -, damping factor beta_t
+
+  // Cundall-Strack: constant k_t (N/m), beta_t from the normal law's.
+  static TangentialSpring linear(double mu, double kt, double beta) {
+    check(mu, beta);
+    if (!(kt > 0)) throw std::invalid_argument("tangential spring: stiffness must be > 0 N/m");
+    return {static_cast<Real>(mu), static_cast<Real>(kt), Real(0), static_cast<Real>(beta)};
+  }
+  // Mindlin: k_t = 8 G* sqrt(R* delta); beta_t = sqrt(5/6) * (-2 ln e / sqrt(ln^2 e + pi^2)).
+  static TangentialSpring mindlin(double mu, double g_star, double restitution) {
+    if (!(g_star > 0)) throw std::invalid_argument("tangential spring: effective shear modulus G* must be > 0 Pa");
+    if (!(restitution > 0 && restitution <= 1)) throw std::invalid_argument("tangential spring: restitution must lie in (0, 1]");
+    const double le = std::log(restitution), pi = 3.14159265358979323846;
+    const double beta = std::sqrt(5.0 / 6.0) * (-2 * le / std::sqrt(le * le + pi * pi));
+    check(mu, beta);
+    return {static_cast<Real>(mu), Real(0), static_cast<Real>(8 * g_star), static_cast<Real>(beta)};
+  }
+  // 1/G* = (2 - nu_a)/G_a + (2 - nu_b)/G_b with G = E / (2 (1 + nu)); Pa.
+  static double effective_shear_modulus(double e_a, double nu_a, double e_b, double nu_b) {
+    const double g_a = e_a / (2 * (1 + nu_a)), g_b = e_b / (2 * (1 + nu_b));
+    return 1 / ((2 - nu_a) / g_a + (2 - nu_b) / g_b);
+  }
+
+  BLAZE_HD Real stiffness(Real delta, Real r_eff) const {
+    return k_hat == Real(0) ? k0 : k0 + k_hat * sqrt_r(r_eff * max_r(delta, Real(0)));
+  }
+
+  // c_t (kg/s) at this overlap.
+  BLAZE_HD Real damping(Real delta, Real r_eff, Real m_eff) const { return beta * sqrt_r(stiffness(delta, r_eff) * m_eff); }
+
+  template <class State>
+  BLAZE_HD TangentialForce<Real> force(const TangentialInput<Real>& in, State& state, int at) const {
+    const Real cap = mu * in.f_n;
+    if (!(cap > Real(0))) {  // pulling or frictionless: nothing transmitted, nothing kept
+      state.set(at, {0, 0, 0});
+      return {{0, 0, 0}, false};
+    }
+    Vec3<Real> s = state.vec(at);
+    const Real length2 = norm2(s);
+    if (length2 > Real(0)) {
+      s -= dot(s, in.normal) * in.normal;
+      const Real turned2 = norm2(s);
+      if (turned2 > Real(0)) s *= sqrt_r(length2 / turned2);
+    }
+    s += in.v_t * in.dt;
+    const Real kt = stiffness(in.overlap, in.r_eff);
+    const Vec3<Real> damping = in.v_t * (beta * sqrt_r(kt * in.m_eff));  // c_t v_t
+    Vec3<Real> f = -(s * kt + damping);
+    const Real f2 = norm2(f);
+    const bool sliding = f2 > cap * cap;
+    if (sliding) {
+      f *= cap / sqrt_r(f2);
+      s = -(f + damping) * (Real(1) / kt);
+    }
+    state.set(at, s);
+    return {f, sliding};
+  }
+
+  // 1/2 k_t |s|^2 (J), in double.
+  template <class State>
+  BLAZE_HD double stored_energy(Real delta, Real r_eff, const State& state, int at) const {
+    const double kt = static_cast<double>(stiffness(delta, r_eff));
+    const Vec3<Real> s = state.vec(at);
+    const double sx = s.x, sy = s.y, sz = s.z;
+    return 0.5 * kt * (sx * sx + sy * sy + sz * sz);
+  }
+
+ private:
+  static void check(double mu, double beta) {
+    if (!(mu >= 0)) throw std::invalid_argument("tangential spring: friction mu must be >= 0");
+    if (!(beta >= 0)) throw std::invalid_argument("tangential spring: damping must be >= 0");
+  }
+};
+
+}  // namespace blaze

@@ -1,0 +1,128 @@
+// The contact store's views and kernels (the owner is pipeline/contact_store.hpp). A law with a
+// state (laws/contact_state.hpp) keeps it per contact:
+//   particle pairs   one state per neighbour-list entry, at the entry's own offset k * stride + i
+//                    (PairHistoryView): each side of a pair keeps its own copy, the mirror of the
+//                    other's, so a particle's thread reads and writes only its own entries (no
+//                    atomics, the same order on every backend) and consecutive threads touch
+//                    consecutive addresses. Pairs evaluated once keep only the lower index's copy.
+//   world objects    a few slots per particle, each holding the object's index (-1: free) and its
+//                    state, at h * stride + i (WallHistoryView); a contact finds its slot by the
+//                    object, takes a free one when it closes and frees it when it opens.
+// A rebuild moves particles in memory and builds a new list, so the pair states are carried over
+// by the pair's identity (RemapPairHistory: the entry of the same two particles in the previous
+// list, through the sort's permutation), and the wall slots move with their particle (the
+// store's permutation).
+#pragma once
+#include <cstdint>
+#include "blaze/laws/contact_state.hpp"
+#include "kernels/broad_phase_kernels.hpp"
+
+namespace blaze {
+
+template <class Real, int N>
+struct PairHistoryView {
+  using State = ContactState<Real, N>;
+  Real* field[N > 0 ? N : 1];
+  int used;  // fields held: N, or fewer when the law's later parts are off (no rolling spring)
+
+  BLAZE_HD State load(std::size_t s) const {
+    State st = State::zero();
+    for (int c = 0; c < used; ++c) st.value[c] = field[c][s];
+    return st;
+  }
+  BLAZE_HD void store(std::size_t s, const State& st) const {
+    for (int c = 0; c < used; ++c) field[c][s] = st.value[c];
+  }
+  // The contact is open: forget its state (written only when it holds one).
+  BLAZE_HD void forget(std::size_t s) const {
+    bool held = false;
+    for (int c = 0; c < used; ++c) held = held || field[c][s] != Real(0);
+    if (held)
+      for (int c = 0; c < used; ++c) field[c][s] = Real(0);
+  }
+};
+
+template <class Real, int N>
+struct WallHistoryView {
+  using State = ContactState<Real, N>;
+  static constexpr int kMaxSlots = 8;  // the bit set of slots seen in one step
+  Real* field[N > 0 ? N : 1];
+  int used;
+  std::int16_t* object;  // world object index per slot, -1: free (a scene has at most 32767 objects)
+  std::uint8_t* overflow;  // per particle: 1 when a contact found no free slot (ran without state)
+  Index stride;
+  int slots;
+
+  BLAZE_HD std::size_t at(int h, Index i) const { return static_cast<std::size_t>(h) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i); }
+  // The slot of object w for particle i, claimed (zeroed) if it has none; -1 if all are taken.
+  BLAZE_HD int slot(Index i, int w) const {
+    int free = -1;
+    for (int h = 0; h < slots; ++h) {
+      const int o = object[at(h, i)];
+      if (o == w) return h;
+      if (o < 0 && free < 0) free = h;
+    }
+    if (free >= 0) {
+      object[at(free, i)] = static_cast<std::int16_t>(w);
+      for (int c = 0; c < used; ++c) field[c][at(free, i)] = Real(0);
+    }
+    return free;
+  }
+  BLAZE_HD State load(int h, Index i) const {
+    State st = State::zero();
+    for (int c = 0; c < used; ++c) st.value[c] = field[c][at(h, i)];
+    return st;
+  }
+  BLAZE_HD void store(int h, Index i, const State& st) const {
+    for (int c = 0; c < used; ++c) field[c][at(h, i)] = st.value[c];
+  }
+  // Frees the slots of i whose object it did not touch this step (bit h of `seen`).
+  BLAZE_HD void release_unseen(Index i, unsigned seen) const {
+    for (int h = 0; h < slots; ++h)
+      if (!((seen >> h) & 1u) && object[at(h, i)] >= 0) object[at(h, i)] = -1;
+  }
+};
+
+// After a rebuild: new entry (k, i) takes the state of the entry of the same pair in the previous
+// list (row order[i], partner order[j]) or zero; one field, from `in` (previous layout) to `out`.
+template <class Real>
+struct RemapPairHistory {
+  NeighbourView list, previous;
+  const Index* order;  // particle i of the new order was particle order[i] of the previous one
+  const Real* in;
+  Real* out;
+
+  BLAZE_HD void operator()(Index i) const {
+    const Index o = order[i];
+    const Index count = min_r(list.count[i], list.capacity);
+    const Index old_count = min_r(previous.count[o], previous.capacity);
+    for (Index k = 0; k < count; ++k) {
+      const Index was = order[list.at(k, i)];
+      Real v = 0;
+      for (Index m = 0; m < old_count; ++m)
+        if (previous.at(m, o) == was) {
+          v = in[previous.offset(m, o)];
+          break;
+        }
+      out[list.offset(k, i)] = v;
+    }
+  }
+};
+
+// Per-particle rows (wall slots) after a rebuild: out[h * n + i] = in[h * stride + order[i]] for
+// the old slots, `empty` for slots added.
+template <class T>
+struct GatherRows {
+  const T* in;
+  T* out;
+  const Index* order;
+  Index n, stride;
+  int old_slots, slots;
+  T empty;
+  BLAZE_HD void operator()(Index i) const {
+    for (int h = 0; h < slots; ++h)
+      out[static_cast<std::size_t>(h) * n + i] = h < old_slots ? in[static_cast<std::size_t>(h) * stride + order[i]] : empty;
+  }
+};
+
+}  // namespace blaze
