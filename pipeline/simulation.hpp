@@ -241,6 +241,8 @@ class Simulation {
   std::uint64_t neighbour_builds() const { return broad_.builds(); }
   Index neighbour_capacity() const { return broad_.capacity(); }
   const SimulationParams<Real>& params() const { return params_; }
+  // Gravity from the next step on (a tilting plane, a turning frame; m/s^2).
+  void set_gravity(const Vec3<Real>& g) { params_.gravity = g; }
   PhaseTimer<Space>& timer() { return timer_; }
 
   // Neighbour list on the host, indexed like state() (diagnostics and tests).

@@ -371,4 +371,13 @@ constexpr double killed_run_seconds = 2;
 // <= 2e-10); the one-point face contact left 0.02-1.4 rad/s (test_polyhedron_rest.cpp).
 constexpr double resting_spin = 1e-6;
 
+// --- contact history (issue 18) ---
+// The issue's bound for a cube below its friction angle: displacement over 1 s after settling,
+// as a share of its edge. The spring's deflection m g sin(theta) / k_t is constant once settled,
+// so what is left is the decay of the settling oscillation (damped at e = 0.3).
+constexpr double history_static_creep = 1e-6;
+// The issue's bound for the sliding onset on a plane tilted at 10 degrees per second (degrees):
+// the spring's Coulomb limit is tan(theta) = mu exactly; the tilt's step per check is 0.05 degree.
+constexpr double history_sliding_onset_deg = 1.0;
+
 }  // namespace blaze::tol

@@ -1,0 +1,174 @@
+// Contact history (issue 18): the tangential spring (tangential_spring.hpp) and the contact store
+// that keeps it (pipeline/contact_store.hpp).
+//  1. A cube on a plane tilted below its friction angle (tan theta < mu) stays put with the spring:
+//     after it settles it moves less than 1e-6 of its size in 1 s (static friction: the spring
+//     holds m g sin(theta) at a deflection of m g sin(theta) / k_t). The history-free law
+//     (thesis eq. 2.3) has no static friction: it creeps at v = m g sin(theta) / K_T (per unit
+//     viscous coefficient), reported.
+//  2. On a plane tilted slowly, the cube starts sliding at tan(theta) = mu (within 1 degree): the
+//     spring's Coulomb limit.
+//  3. History survives re-sorting: spheres resting against each other on an incline, run with a
+//     rebuild (sort, new list, carried-over states) every step, and with no rebuild at all, follow
+//     the same trajectory bitwise on the host (each sphere has at most two pair contacts, whose
+//     sum is the same in either order).
+//  4. Pairs evaluated once and from both sides give the same trajectory bitwise on the host,
+//     with history.
+#include <boost/test/unit_test.hpp>
+#include <boost/test/data/test_case.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+#include "blaze/shapes/polyhedron_shape.hpp"
+#include "blaze/shapes/shape_io.hpp"
+#include "verification/cases/single_body.hpp"
+#include "verification/report.hpp"
+#include "verification/scenes.hpp"
+
+using namespace blaze;
+using namespace blaze::test;
+namespace bdata = boost::unit_test::data;
+
+namespace {
+
+constexpr double kG = 9.81, kR = 0.01, kDensity = 2500;
+constexpr double kKn = 2e4;  // N/m: static overlap m g / k ~ 3e-6 m for the 6 g cube
+constexpr double kDt = 1e-5;  // s: t_c / 54 (t_c = pi sqrt(m / k) ~ 1.7 ms)
+
+// A cube flat on the floor y = 0 (gravity tilted by theta about z instead of the floor).
+struct CubeOnPlane {
+  PolyhedronShape<double> shape;
+  ConvexShape cube;
+  double half = 0, mass = 0;
+  ParticleState<double> state;
+  CubeOnPlane() {
+    cube = load_scaled_shape("data/shapes/cube.shape", kR);
+    shape.table.add(cube, kDensity);
+    half = cases::cube_half_edge(cube);
+    mass = shape.table.type[0].mass;
+    const Quat<double> flat = cases::cube_facing<double>(cube, Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(1, 0, 0));
+    add_polyhedron(state, shape.table, 0, Vec3<double>{0, half - mass * kG / kKn, 0}, flat, 0);
+  }
+};
+
+Vec3<double> tilted_gravity(double theta) { return {kG * std::sin(theta), -kG * std::cos(theta), 0}; }
+
+template <class Law>
+Simulation<DefaultSpace, PolyhedronShape<double>, Law, VelocityVerlet> cube_sim(CubeOnPlane& c, const Law& law, double theta) {
+  World<double> world;
+  world.polygons.push_back(floor_square<double>(0.0, 1.0));
+  const SimulationParams<double> prm{kDt, tilted_gravity(theta), {-1, -0.05, -0.1}, {1, 0.1, 0.1}, 0.2 * kR};
+  return {prm, one_law(law), world, c.state, c.shape};
+}
+
+LinearSpringLaw<double> spring_law(double mu) {
+  const auto normal = LinearSpringDashpot<double>::from_restitution(kKn, 0.3);
+  return {normal, TangentialSpring<double>::linear(mu, 2.0 / 7.0 * kKn, normal.beta)};
+}
+
+// x displacement of the cube between t = 0.1 s (settled) and t = 1.1 s, m.
+template <class Law>
+double creep(const Law& law, double theta) {
+  CubeOnPlane c;
+  auto sim = cube_sim(c, law, theta);
+  sim.run(static_cast<std::uint64_t>(std::llround(0.1 / kDt)));
+  const double x0 = sim.state().position[0].x;
+  sim.run(static_cast<std::uint64_t>(std::llround(1.0 / kDt)));
+  return sim.state().position[0].x - x0;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(contact_history)
+
+BOOST_DATA_TEST_CASE(cube_stays_put_below_its_friction_angle, bdata::make({0.3, 0.5, 0.8}), mu) {
+  const double theta = 0.8 * std::atan(mu);  // below the friction angle, by 20%
+  CubeOnPlane c;
+  const double moved = std::fabs(creep(spring_law(mu), theta));
+  const auto free_law = LinearLaw<double>{LinearSpringDashpot<double>::from_restitution(kKn, 0.3), HistoryFreeFriction<double>::make(mu, 1.0)};
+  const double crept = creep(free_law, theta);
+  const Row row{"Contact history (issue 18): cube on an incline", "displacement over 1 s / edge, spring, mu = " + std::to_string(mu).substr(0, 3) +
+                                                                       ", tan(theta) = 0.8 mu",
+                "-", "static friction: the spring holds m g sin(theta)"};
+  check_at_most(row, moved / (2 * c.half), tol::history_static_creep);
+  // The history-free law creeps at about m g sin(theta) / K_T (the viscous branch carries the load).
+  const double rate = c.mass * kG * std::sin(theta) / 1.0;
+  BOOST_TEST_MESSAGE("cube on an incline, mu = " << mu << ": spring moved " << moved << " m in 1 s; history-free crept "
+                                                 << crept << " m/s (m g sin(theta) / K_T = " << rate << " m/s)");
+  BOOST_TEST(crept > 0.5 * rate);
+}
+
+BOOST_DATA_TEST_CASE(cube_starts_sliding_at_the_friction_angle, bdata::make({0.3, 0.5}), mu) {
+  // Tilt 1 degree per 0.1 s from 5 degrees below atan(mu); sliding: the cube's speed along the
+  // slope passes 1 mm/s (sticking, it stays near 0; sliding, it accelerates at g (sin - mu cos)).
+  CubeOnPlane c;
+  const double start = std::atan(mu) - 5 * kPi / 180, rate = kPi / 180 / 0.1;  // rad, rad/s
+  auto sim = cube_sim(c, spring_law(mu), start);
+  sim.run(static_cast<std::uint64_t>(std::llround(0.05 / kDt)));  // settle
+  double onset = -1;
+  for (long k = 0; k < 2000 && onset < 0; ++k) {
+    const double theta = start + rate * (static_cast<double>(k) * 50 * kDt);
+    sim.set_gravity(tilted_gravity(theta));
+    sim.run(50);
+    if (sim.state().velocity[0].x > 1e-3) onset = theta;
+  }
+  const Row row{"Contact history (issue 18): cube on a tilting plane", "sliding onset angle - atan(mu), degrees, mu = " + std::to_string(mu).substr(0, 3),
+                "-", "Coulomb limit of the spring"};
+  BOOST_TEST_REQUIRE(onset > 0);
+  check_at_most(row, std::fabs(onset - std::atan(mu)) * 180 / kPi, tol::history_sliding_onset_deg);
+}
+
+namespace {
+
+// Four spheres in a row on a floor tilted by 20 degrees (gravity tilted), mu = 0.6, each touching
+// its neighbours: the lowest rests against a fixed wall at x = 0, the chain presses down the slope.
+template <class Law>
+ParticleState<double> chain_on_incline(double skin, std::uint64_t steps, PairEvaluation pairs, const Law& law, std::uint64_t* builds) {
+  const double r = 0.005, theta = 20 * kPi / 180;
+  ParticleState<double> s;
+  for (int k = 0; k < 4; ++k) s.add_sphere({r * (1 + 2 * k) - 2e-7 * k, r - 1e-7, 0}, r, kDensity, 0);
+  World<double> world;
+  world.polygons.push_back(floor_square<double>(0.0, 1.0));
+  world.polygons.push_back(PlanarPolygon<double>::make({{0, 0, 0.1}, {0, 0, -0.1}, {0, 0.1, -0.1}, {0, 0.1, 0.1}}, 1));
+  SimulationParams<double> prm{2e-5, {-kG * std::sin(theta), -kG * std::cos(theta), 0}, {-0.01, -0.01, -0.02}, {0.1, 0.05, 0.02}, skin};
+  prm.pairs = pairs;
+  SphereSim<Law> sim(prm, one_law(law), world, s);
+  sim.run(steps);
+  if (builds) *builds = sim.neighbour_builds();
+  auto out = sim.state();
+  // by id
+  ParticleState<double> sorted = out;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const auto id = static_cast<std::size_t>(out.id[k]);
+    sorted.position[id] = out.position[k];
+    sorted.velocity[id] = out.velocity[k];
+    sorted.angular_velocity[id] = out.angular_velocity[k];
+  }
+  return sorted;
+}
+
+bool same_trajectory(const ParticleState<double>& a, const ParticleState<double>& b) {
+  bool same = a.size() == b.size();
+  for (std::size_t i = 0; same && i < a.size(); ++i)
+    same = a.position[i].x == b.position[i].x && a.position[i].y == b.position[i].y && a.velocity[i].x == b.velocity[i].x &&
+           a.velocity[i].y == b.velocity[i].y && a.angular_velocity[i].z == b.angular_velocity[i].z;
+  return same;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(history_survives_re_sorting) {
+  const auto normal = LinearSpringDashpot<double>::from_restitution(1e4, 0.5);
+  const LinearSpringLaw<double> law{normal, TangentialSpring<double>::linear(0.6, 2.0 / 7.0 * 1e4, normal.beta)};
+  std::uint64_t every = 0, never = 0;
+  const auto a = chain_on_incline(0.0, 5000, PairEvaluation::both_sides, law, &every);   // skin 0: a rebuild whenever anything moves
+  const auto b = chain_on_incline(0.02, 5000, PairEvaluation::both_sides, law, &never);  // a skin of 4 radii: the first list lasts
+  BOOST_TEST(every > 4000u);
+  BOOST_TEST(never == 1u);
+  BOOST_TEST(same_trajectory(a, b));
+  // The chain is held: the spring carries the load (no creep down the slope beyond the settling).
+  for (std::size_t i = 0; i < a.size(); ++i) BOOST_TEST(std::fabs(a.velocity[i].x) < 1e-4);
+  const auto once = chain_on_incline(0.0, 5000, PairEvaluation::once, law, nullptr);
+  if (std::is_same_v<DefaultSpace, Host>) BOOST_TEST(same_trajectory(a, once));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
