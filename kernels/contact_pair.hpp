@@ -41,6 +41,12 @@ BLAZE_HD_INLINE auto pair_side(const Shape& shape, const ParticleView<Real>& p, 
                               p.material[i]};
 }
 
+// 1 / (I + m r^2) of sphere i about its contact point at arm r (rolling resistance), 1/(kg m^2).
+template <class Real>
+BLAZE_HD_INLINE Real rolling_term(const ParticleView<Real>& p, Index i, const Vec3<Real>& r) {
+  return Real(1) / (Real(1) / p.inv_inertia[i] + norm2(r) / p.inv_mass[i]);
+}
+
 // F_ij on i (and a moment on i: a patch's about the contact point, a rolling resistance) for the
 // geometry g of i and j (normal from i towards j, contact_geometry.hpp), with the contact's state
 // (updated; laws without history have none).
@@ -57,7 +63,10 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
     return contact_patch_force(law, g, v_rel, a.w - wj, m_eff, state, dt);
   } else {
     const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, vj, wj, g.point - bj.x);
-    return law.evaluate(g, {v_rel, a.w - wj, m_eff}, state, dt);
+    ContactMotion<Real> m{v_rel, a.w - wj, m_eff};
+    if constexpr (Law::kRolling)  // spheres (isotropic inertia): 1/I_r = sum 1 / (I + m r^2)
+      m.inv_rolling_inertia = rolling_term(p, a.body.index, g.point - a.body.x) + rolling_term(p, j, g.point - bj.x);
+    return law.evaluate(g, m, state, dt);
   }
 }
 

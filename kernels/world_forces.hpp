@@ -62,7 +62,9 @@ struct WorldForces {
         const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(vi, wi, x - body.x, zero, zero, zero); };
         c = contact_patch_force(law, g, v_rel, wi, m_eff, state, dt);
       } else {
-        c = law.evaluate(g, {Kinematics::relative(vi, wi, ri, zero, zero, zero), wi, m_eff}, state, dt);
+        ContactMotion<Real> m{Kinematics::relative(vi, wi, ri, zero, zero, zero), wi, m_eff};
+        if constexpr (Law::kRolling) m.inv_rolling_inertia = rolling_term(p, i, ri);  // the wall: I_j infinite
+        c = law.evaluate(g, m, state, dt);
       }
       if constexpr (Law::kHistory)
         if (h >= 0) history.store(h, i, state);

@@ -368,7 +368,10 @@ class Simulation {
   // up to 3 to begin with); the broad phase keeps the previous list for the carry-over.
   void configure_contacts(const World<Real>& world) {
     if constexpr (Law::kHistory) {
-      contacts_.configure(Law::State::kReals, static_cast<int>(world.polygons.size() + world.cylinders.size()));
+      int used = 0;  // the most any pair's law uses (a rolling spring only under model C)
+      for (int k = 0; k < PairTable<Law>::kMaxMaterials * PairTable<Law>::kMaxMaterials; ++k)
+        if (laws_.defined[k]) used = std::max(used, laws_.entries[k].state_reals());
+      contacts_.configure(used, static_cast<int>(world.polygons.size() + world.cylinders.size()));
       broad_.keep_previous_list();
     }
   }

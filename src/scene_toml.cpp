@@ -390,8 +390,15 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
                                         "domain_lo", "domain_hi", "skin", "pair_evaluation", "force_dt", "max_impact_speed", "seed",
-                                        "force_long_run"});
+                                        "force_long_run", "tangential"});
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
+  s.tangential = static_cast<TangentialKind>(f.choice("tangential", {"history_free", "mindlin", "linear_spring"}, 0));
+  if (s.tangential == TangentialKind::mindlin && s.law != LawKind::hertz)
+    f.fail(*f.get("tangential"), "tangential", "\"mindlin\" needs law = \"hertz\" (its stiffness 8 G* sqrt(R* delta)); "
+                                               "with law = \"linear\": \"history_free\" or \"linear_spring\"");
+  if (s.tangential == TangentialKind::linear_spring && s.law != LawKind::linear)
+    f.fail(*f.get("tangential"), "tangential", "\"linear_spring\" needs law = \"linear\"; with law = \"hertz\": "
+                                               "\"history_free\" or \"mindlin\"");
   s.precision = static_cast<PrecisionKind>(f.choice("precision", {"float", "double"}, 1));
   s.backend = static_cast<BackendKind>(f.choice("backend", {"auto", "cpu", "gpu"}, 0));
   if (f.has("dt") == f.has("steps_per_contact")) {
@@ -474,10 +481,11 @@ void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
   const auto names = material_names(s);
   for (std::size_t k = 0; k < items.size(); ++k) {
     // Hertz takes its stiffness from the materials' youngs_modulus and poisson_ratio.
-    const std::vector<std::string> keys =
-        s.law == LawKind::linear
-            ? std::vector<std::string>{"materials", "stiffness", "contact_time", "restitution", "friction", "tangential_damping", "no_tension"}
-            : std::vector<std::string>{"materials", "restitution", "friction", "tangential_damping", "no_tension"};
+    // The history-free law's K_T (tangential_damping) or the linear spring's k_t (tangential_stiffness).
+    std::vector<std::string> keys = s.law == LawKind::linear ? std::vector<std::string>{"materials", "stiffness", "contact_time", "restitution", "friction", "no_tension"}
+                                                             : std::vector<std::string>{"materials", "restitution", "friction", "no_tension"};
+    if (s.tangential == TangentialKind::history_free) keys.push_back("tangential_damping");
+    if (s.tangential == TangentialKind::linear_spring) keys.push_back("tangential_stiffness");
     Fields f(*items[k], item_label("pair", k), file, keys);
     PairSpec p;
     const toml::node* mats = f.get("materials");
@@ -505,6 +513,7 @@ void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
     p.restitution = f.number("restitution", {0, 1, true, false, "(coefficient of restitution)"});
     p.friction = f.number_or("friction", 0, {0, 100, false, false, "(Coulomb coefficient)"});
     p.tangential_damping = f.number_or("tangential_damping", 0, non_negative("kg/s (K_T of eq. 2.3)"));
+    p.tangential_stiffness = f.number_or("tangential_stiffness", 0, up_to(kMaxModulus, "N/m (k_t; default 2/7 of the normal stiffness)"));
     p.no_tension = f.boolean_or("no_tension", s.law == LawKind::hertz);
     s.pairs.push_back(p);
   }

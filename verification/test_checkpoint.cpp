@@ -1,6 +1,6 @@
 // Checkpoint and restart (issue 5): a run continued from a checkpoint file is bit for bit the run
-// that wrote it (spheres with both Verlet variants and polyhedra, through re-sorting and
-// rebuilds); corrupt, truncated, foreign or wrong-precision files are rejected by name; a writer
+// that wrote it (spheres with both Verlet variants, with contact history, and polyhedra, through
+// re-sorting and rebuilds); corrupt, truncated, foreign or wrong-precision files are rejected by name; a writer
 // killed with SIGKILL mid-write leaves the previous checkpoint whole.
 #include <boost/test/unit_test.hpp>
 #include <signal.h>
@@ -57,13 +57,21 @@ void restart_is_bitwise(Make make, const SimulationParams<Real>& prm, const Laws
   std::filesystem::remove(path);
 }
 
-template <class Real, class Integrator>
+template <class Law>
+Law packing_law(double k) {
+  using Real = typename Law::real_type;
+  const auto normal = LinearSpringDashpot<Real>::from_restitution(k, 0.5);
+  if constexpr (Law::kHistory) return {normal, TangentialSpring<Real>::linear(0.4, 2.0 / 7.0 * k, normal.beta)};
+  else return {normal, HistoryFreeFriction<Real>::make(0.4, 0.05)};
+}
+
+// Law: the history-free linear law, or the linear spring (its contact store goes through the file).
+template <class Real, class Integrator, class Law = LinearLaw<Real>>
 void sphere_restart(const char* label) {
-  using Law = LinearLaw<Real>;
   const double r = 2e-3, m = 2500 * 4.0 / 3.0 * kPi * r * r * r, k = 1e5;
   const double dt = kPi * std::sqrt(0.5 * m / k) / 25;
   const auto scene = gravity_packing<Real>(300, r, 77, dt);
-  const Law law{LinearSpringDashpot<Real>::from_restitution(k, 0.5), HistoryFreeFriction<Real>::make(0.4, 0.05)};
+  const Law law = packing_law<Law>(k);
   using Sim = Simulation<DefaultSpace, SphereShape, Law, Integrator>;
   const auto laws = one_law(law);
   restart_is_bitwise<Sim, Real>([&] { return Sim(scene.params, laws, scene.world, scene.particles); }, scene.params, laws,
@@ -90,6 +98,10 @@ BOOST_AUTO_TEST_SUITE(checkpoint)
 
 BOOST_AUTO_TEST_CASE(sphere_restart_is_bitwise_velocity_verlet_double) { sphere_restart<double, VelocityVerlet>("vv_double"); }
 BOOST_AUTO_TEST_CASE(sphere_restart_is_bitwise_half_step_float) { sphere_restart<float, HalfStepVerlet>("half_float"); }
+BOOST_AUTO_TEST_CASE(sphere_restart_with_history_is_bitwise) {
+  sphere_restart<double, VelocityVerlet, LinearSpringLaw<double>>("spring_double");
+  sphere_restart<float, VelocityVerlet, LinearSpringLaw<float>>("spring_float");
+}
 
 BOOST_AUTO_TEST_CASE(polyhedron_restart_is_bitwise) {
   const cases::CubeBed bed = cases::cube_bed();

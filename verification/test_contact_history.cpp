@@ -13,9 +13,11 @@
 //     sum is the same in either order).
 //  4. Pairs evaluated once and from both sides give the same trajectory bitwise on the host,
 //     with history.
+//  5. The two sides' copies of a spring stay exact mirrors (random slips and turning normals).
 #include <boost/test/unit_test.hpp>
 #include <boost/test/data/test_case.hpp>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 #include "blaze/shapes/polyhedron_shape.hpp"
@@ -169,6 +171,53 @@ BOOST_AUTO_TEST_CASE(history_survives_re_sorting) {
   for (std::size_t i = 0; i < a.size(); ++i) BOOST_TEST(std::fabs(a.velocity[i].x) < 1e-4);
   const auto once = chain_on_incline(0.0, 5000, PairEvaluation::once, law, nullptr);
   if (std::is_same_v<DefaultSpace, Host>) BOOST_TEST(same_trajectory(a, once));
+}
+
+// Every operation of the spring is odd in (s, v_t, n) together: the two sides of a pair, each with
+// its own copy, stay exact mirrors step after step (what lets each side keep its own state), and
+// the force on j is exactly minus the force on i. Random overlaps, slips and normals that turn a
+// little each step, sticking and sliding, linear and Mindlin, float and double.
+template <class Law>
+void check_mirrored(const Law& law, unsigned seed) {
+  using Real = typename Law::real_type;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  typename Law::State si = Law::State::zero(), sj = Law::State::zero();
+  Vec3<double> n{0.3, 0.9, 0.1};
+  long sliding = 0, sticking = 0;
+  bool mirrored = true;
+  for (int step = 0; step < 2000; ++step) {
+    n = n + Vec3<double>{u(rng), u(rng), u(rng)} * 0.02;
+    n = n * (1 / norm(n));
+    const ContactGeometry<Real> gi{true, vec_cast<Real>(n), static_cast<Real>(1e-5 * (1.5 + u(rng))), {0, 0, 0}, Real(2.5e-3)};
+    ContactGeometry<Real> gj = gi;
+    gj.normal = -gi.normal;
+    // Slow random slips (sticking), then a steady fast slip with noise (sliding).
+    const Vec3<double> slip = step % 400 < 200 ? Vec3<double>{u(rng), u(rng), u(rng)} * 1e-4
+                                               : Vec3<double>{0.3, -0.1, 0.2} + Vec3<double>{u(rng), u(rng), u(rng)} * 0.05;
+    const Vec3<Real> v = vec_cast<Real>(slip);
+    const auto fi = law.evaluate(gi, {v, {0, 0, 0}, Real(1e-3)}, si, Real(1e-6));
+    const auto fj = law.evaluate(gj, {-v, {0, 0, 0}, Real(1e-3)}, sj, Real(1e-6));
+    (fi.sliding ? sliding : sticking) += 1;
+    mirrored = mirrored && fi.force.x == -fj.force.x && fi.force.y == -fj.force.y && fi.force.z == -fj.force.z &&
+               fi.sliding == fj.sliding;
+    for (int c = 0; c < Law::State::kReals; ++c) mirrored = mirrored && si.value[c] == -sj.value[c];
+  }
+  BOOST_TEST(mirrored);
+  BOOST_TEST(sliding > 50);  // both branches visited
+  BOOST_TEST(sticking > 50);
+}
+
+BOOST_AUTO_TEST_CASE(the_two_sides_of_a_spring_stay_mirrored) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const auto ld = LinearSpringDashpot<double>::from_restitution(1e4, 0.4);
+    check_mirrored(LinearSpringLaw<double>{ld, TangentialSpring<double>::linear(0.5, 3e3, ld.beta)}, seed);
+    const auto lf = LinearSpringDashpot<float>::from_restitution(1e4, 0.4);
+    check_mirrored(LinearSpringLaw<float>{lf, TangentialSpring<float>::linear(0.5, 3e3, lf.beta)}, seed);
+    const double g_star = TangentialSpring<double>::effective_shear_modulus(7e10, 0.3, 7e10, 0.3);
+    check_mirrored(HertzMindlinLaw<double>{Hertz<double>::from_restitution(3.8e10, 0.4, true), TangentialSpring<double>::mindlin(0.5, g_star, 0.4)}, seed);
+    check_mirrored(HertzMindlinLaw<float>{Hertz<float>::from_restitution(3.8e10, 0.4, true), TangentialSpring<float>::mindlin(0.5, g_star, 0.4)}, seed);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -379,5 +379,9 @@ constexpr double history_static_creep = 1e-6;
 // The bound for the sliding onset on a plane tilted at 10 degrees per second (degrees):
 // the spring's Coulomb limit is tan(theta) = mu exactly; the tilt's step per check is 0.05 degree.
 constexpr double history_sliding_onset_deg = 1.0;
+// The bound for a sphere rolling under the constant torque: deceleration (5/7) mu_r g and
+// stopping distance v0^2 / (2 a). The contact arm r - delta/2 against r and the tangential spring's
+// settling shift both by ~1e-4 of their value.
+constexpr double rolling_deceleration = 0.01;
 
 }  // namespace blaze::tol

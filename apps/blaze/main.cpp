@@ -246,14 +246,18 @@ int run_scene(const Scene& s, const Options& o) {
   return 0;
 }
 
+template <class Real, class Law>
+int run_law(const Scene& s, const Options& o) {
+  return s.all_spheres() ? run_scene<Real, Law, SphereShape>(s, o) : run_scene<Real, Law, PolyhedronShape<Real>>(s, o);
+}
+
+// The scene's law: normal (linear, Hertz) x tangential (history-free, or the spring: the scene
+// parser pairs Mindlin with Hertz and the linear spring with the linear law).
 template <class Real>
 int run_precision(const Scene& s, const Options& o) {
-  const bool spheres = s.all_spheres();
-  if (s.law == LawKind::linear)
-    return spheres ? run_scene<Real, LinearLaw<Real>, SphereShape>(s, o)
-                   : run_scene<Real, LinearLaw<Real>, PolyhedronShape<Real>>(s, o);
-  return spheres ? run_scene<Real, HertzLaw<Real>, SphereShape>(s, o)
-                 : run_scene<Real, HertzLaw<Real>, PolyhedronShape<Real>>(s, o);
+  const bool spring = s.tangential != TangentialKind::history_free;
+  if (s.law == LawKind::linear) return spring ? run_law<Real, LinearSpringLaw<Real>>(s, o) : run_law<Real, LinearLaw<Real>>(s, o);
+  return spring ? run_law<Real, HertzMindlinLaw<Real>>(s, o) : run_law<Real, HertzLaw<Real>>(s, o);
 }
 
 }  // namespace
@@ -267,8 +271,11 @@ int main(int argc, char** argv) try {
     throw SceneError(s.place("simulation.backend") + " = \"gpu\": this is the CPU build (build/cpu/blaze); run build/cuda/blaze");
   if (s.backend == BackendKind::cpu && gpu_build)
     throw SceneError(s.place("simulation.backend") + " = \"cpu\": this is the GPU build (build/cuda/blaze); run build/cpu/blaze");
-  std::printf("blaze: %s, %s law, %s, %s (%s)\n", s.path.c_str(), to_string(s.law), to_string(s.precision),
-              DefaultSpace::name, device_name(DefaultSpace{}).c_str());
+  std::printf("blaze: %s, %s law%s, %s, %s (%s)\n", s.path.c_str(), to_string(s.law),
+              s.tangential == TangentialKind::mindlin         ? " + Mindlin tangential spring"
+              : s.tangential == TangentialKind::linear_spring ? " + linear tangential spring"
+                                                              : "",
+              to_string(s.precision), DefaultSpace::name, device_name(DefaultSpace{}).c_str());
   std::printf("dt = %.4g s = %.3f of the critical step %.4g s (%s)%s\n", s.dt, s.dt / s.dt_critical, s.dt_critical,
               s.dt_governing.c_str(), s.dt > kSafeStepFraction * s.dt_critical ? ", ABOVE the safe fraction: forced" : "");
   std::printf("impact at %.3g m/s: deepest elastic overlap %.3g%% of the radius (%s)%s\n", s.impact_speed,

@@ -373,6 +373,26 @@ inline std::vector<Case> cases(bool gpu_build) {
     c.back().must = {"at most 8"};
   }
 
+  // --- contact history (issue 18): the tangential law's keys
+  const std::pair<std::string, std::string> no_kt{"tangential_damping = 0.1\n", ""};
+  edited("spheres with the linear tangential spring", "spheres", {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\""}, no_kt},
+         Expect::runs, {"linear tangential spring"});
+  edited("linear spring with its stiffness", "spheres",
+         {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\""}, {"tangential_damping = 0.1", "tangential_stiffness = 5e3"}},
+         Expect::runs, {"tangential spring"});
+  runs("drum with the Mindlin spring", "drum", {"tangential=\"mindlin\""}, {"Mindlin tangential spring"});
+  rejected("Mindlin with the linear law", "spheres", {"tangential=\"mindlin\""}, {"key 'tangential'", "hertz"});
+  rejected("linear spring with Hertz", "drum", {"tangential=\"linear_spring\""}, {"key 'tangential'", "linear"});
+  rejected("unknown tangential law", "spheres", {"tangential=\"sticky\""}, {"key 'tangential'", "history_free"});
+  edited("K_T given to the linear spring", "spheres", {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\""}},
+         Expect::rejected, {"tangential_damping"});
+  edited("tangential_stiffness with the history-free law", "spheres", {{"tangential_damping = 0.1", "tangential_stiffness = 5e3"}},
+         Expect::rejected, {"tangential_stiffness"});
+  for (const auto& v : {"-1", "0", "nan", "1e300", "\"text\""})
+    c.push_back({std::string("odd tangential_stiffness = ") + v, "spheres",
+                 {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\""}, no_kt},
+                 {std::string("pair[0].tangential_stiffness=") + v}, Expect::either, {}, false});
+
   // --- sweeps: odd values of every number, vector and choice key (either refused by key, or run)
   const std::vector<std::string> odd_numbers = {"-1", "0", "nan", "inf", "-inf", "1e300", "1e-300", "\"text\"", "[1, 2]", "true"};
   for (const char* key : {"dt", "end_time", "drag", "skin", "max_impact_speed", "seed", "output.csv_interval",
@@ -392,7 +412,7 @@ inline std::vector<Case> cases(bool gpu_build) {
     for (const auto& v : odd_vectors)
       c.push_back({std::string("odd ") + key + " = " + v, std::string(key).rfind("cylinder", 0) == 0 ? "drum" : "spheres", {},
                    {std::string(key) + "=" + v}, Expect::either, {}, false});
-  for (const char* key : {"law", "precision", "backend", "pair_evaluation"})
+  for (const char* key : {"law", "precision", "backend", "pair_evaluation", "tangential"})
     for (const auto& v : {"bogus", "1", "\"\""})
       c.push_back({std::string("odd ") + key + " = " + v, "spheres", {}, {std::string(key) + "=" + v}, Expect::either, {}, false});
   for (const auto& v : {"[[0, 0, 0]]", "[]", "[[nan, 0, 0]]", "[[0.2, 0.05, 0]]"})

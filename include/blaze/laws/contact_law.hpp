@@ -15,6 +15,7 @@
 #include <type_traits>
 #include "blaze/contact/contact_geometry.hpp"
 #include "blaze/laws/contact_state.hpp"
+#include "blaze/laws/rolling_resistance.hpp"
 #include "blaze/laws/tangential_spring.hpp"
 
 namespace blaze {
@@ -25,6 +26,7 @@ struct ContactMotion {
   Vec3<Real> v_rel;  // m/s, at the contact point (kinematics.hpp)
   Vec3<Real> w_rel;  // rad/s, w_i - w_j (rolling laws)
   Real m_eff;        // kg, 1 / (1/m_i + 1/m_j)
+  Real inv_rolling_inertia = 0;  // 1/(kg m^2), 1 / I_r (rolling laws; rolling_resistance.hpp)
 };
 
 template <class Real>
@@ -58,7 +60,17 @@ struct ContactLaw {
     const Real f_n = normal.normal_force(g.overlap, v_n, m.m_eff, g.r_eff);
     const TangentialInput<Real> in{g.normal, g.overlap, g.r_eff, m.v_rel - v_n * g.normal, f_n, m.m_eff, dt};
     const TangentialForce<Real> t = tangential.force(in, state, 0);
-    return {g.normal * (-f_n) + t.force, {0, 0, 0}, t.sliding};
+    ContactForce<Real> out{g.normal * (-f_n) + t.force, {0, 0, 0}, t.sliding};
+    if constexpr (kRolling)
+      out.moment = rolling.moment({g.normal, g.r_eff, m.w_rel, f_n, normal.tangent_stiffness(g.overlap, g.r_eff),
+                                   m.inv_rolling_inertia, dt},
+                                  state, kRollingAt);
+    return out;
+  }
+  // Reals of state in use (the contact store holds these): the rolling spring only under model C.
+  int state_reals() const {
+    if constexpr (kRolling) return TangentialLaw<Real>::kStateReals + rolling.state_reals();
+    return State::kReals;
   }
 
   // The stateless law's force on i (laws without history only).
@@ -74,6 +86,15 @@ struct ContactLaw {
   BLAZE_HD double stored_energy(const ContactGeometry<Real>& g, const State& state = State::zero()) const {
     double e = normal.stored_energy(g.overlap, g.r_eff);
     if constexpr (TangentialLaw<Real>::kStateReals > 0) e += tangential.stored_energy(g.overlap, g.r_eff, state, 0);
+    if constexpr (kRolling)
+      if (rolling.model == RollingModel::epsd && rolling.mu_r > Real(0)) {  // 1/2 |M_k|^2 / k_r
+        const double k_r = 2.25 * static_cast<double>(normal.tangent_stiffness(g.overlap, g.r_eff)) *
+                           static_cast<double>(rolling.mu_r) * static_cast<double>(rolling.mu_r) *
+                           static_cast<double>(g.r_eff) * static_cast<double>(g.r_eff);
+        const Vec3<Real> mk = state.vec(kRollingAt);
+        const double m2 = static_cast<double>(mk.x) * mk.x + static_cast<double>(mk.y) * mk.y + static_cast<double>(mk.z) * mk.z;
+        if (k_r > 0) e += 0.5 * m2 / k_r;
+      }
     return e;
   }
 };

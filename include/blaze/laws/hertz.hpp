@@ -80,6 +80,10 @@ struct Hertz {
     const double d = static_cast<double>(delta);
     return 0.4 * static_cast<double>(k_hat) * sqrt_r(static_cast<double>(r_eff)) * d * d * sqrt_r(d);
   }
+  // dF/d(delta) of the spring, 1.5 K_n sqrt(delta) (N/m): a rolling spring's k_n.
+  BLAZE_HD Real tangent_stiffness(Real delta, Real r_eff) const {
+    return Real(1.5) * k_hat * sqrt_r(r_eff * max_r(delta, Real(0)));
+  }
   // dF/d(delta) (N/m), for the critical time step.
   Real stiffness(Real delta, Real r_eff) const { return Real(1.5) * k_hat * std::sqrt(r_eff * delta); }
 };

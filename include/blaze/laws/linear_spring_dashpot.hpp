@@ -60,6 +60,8 @@ struct LinearSpringDashpot {
     const double d = delta > Real(0) ? static_cast<double>(delta) : 0.0;
     return 0.5 * static_cast<double>(kn) * d * d;
   }
+  // The spring's stiffness (N/m): a rolling spring's k_n.
+  BLAZE_HD Real tangent_stiffness(Real, Real) const { return kn; }
   // Normal stiffness at this overlap (N/m), for the critical time step.
   Real stiffness(Real /*delta*/, Real /*r_eff*/) const { return kn; }
 };

@@ -14,6 +14,13 @@
 // v is the scene's max_impact_speed, or the largest initial speed plus a fall through the whole
 // domain height, sqrt(2 |g| H) (at least 0.1 m/s).
 //
+// Tangential spring (tangential = "mindlin" | "linear_spring", tangential_spring.hpp): the contact
+// point's tangential oscillation has stiffness k_t and inverse mass kappa / m*, kappa = 1 + m r^2/I
+// per body for the contact arm r (a solid sphere: 1 + 5/2 = 3.5, so k_t = 2/7 k_n has the normal
+// period; polyhedra are taken at 6, above a cube's 5.5 at its bounding radius). Its bound
+// 2 / sqrt(kappa k_t / m*) enters like the normal one; Mindlin's k_t = 8 G* sqrt(R* delta) is taken
+// at the impact overlap delta_max above (G* from the two materials' E and nu).
+//
 // Safe fraction: in a packing with z contacts per particle the fastest mode is at most sqrt(z)
 // times the pair frequency (Gershgorin bound of the stiffness matrix), so dt < 2 / (sqrt(z) w);
 // 0.2 of the pair limit covers z <= 25 (12 for equal spheres). A scene whose dt exceeds that is
@@ -59,6 +66,8 @@ struct PairPhysics {
   double r_eff = 0;      // m
   double k_linear = 0;   // N/m (linear law)
   double e_star = 0;     // Pa (Hertz law)
+  double g_star = 0;     // Pa, 1/G* = (2 - nu_a)/G_a + (2 - nu_b)/G_b (Mindlin)
+  double k_tangential = 0;  // N/m, linear_spring k_t
 };
 
 inline double plane_strain_modulus(const MaterialSpec& m) {
@@ -82,8 +91,13 @@ inline PairPhysics pair_physics(const Scene& s, int a, int b, bool wall) {
   const PairSpec* spec = s.pair(a, b);
   if (spec && s.law == LawKind::linear) p.k_linear = linear_stiffness(s, *spec);
   const MaterialSpec &ma = s.materials[static_cast<std::size_t>(a)], &mb = s.materials[static_cast<std::size_t>(b)];
-  if (ma.youngs_modulus > 0 && mb.youngs_modulus > 0)
+  if (ma.youngs_modulus > 0 && mb.youngs_modulus > 0) {
     p.e_star = 1 / (1 / plane_strain_modulus(ma) + 1 / plane_strain_modulus(mb));
+    const double ga = ma.youngs_modulus / (2 * (1 + ma.poisson_ratio)), gb = mb.youngs_modulus / (2 * (1 + mb.poisson_ratio));
+    p.g_star = 1 / ((2 - ma.poisson_ratio) / ga + (2 - mb.poisson_ratio) / gb);
+  }
+  if (spec && s.law == LawKind::linear && s.tangential == TangentialKind::linear_spring)
+    p.k_tangential = spec->tangential_stiffness > 0 ? spec->tangential_stiffness : 2.0 / 7.0 * p.k_linear;
   return p;
 }
 
@@ -124,20 +138,27 @@ inline CriticalStep critical_step(const Scene& s) {
   auto consider = [&](int a, int b, bool wall) {
     const PairPhysics p = pair_physics(s, a, b, wall);
     if (!(p.m_eff > 0)) return;
-    double k, t_c;
+    double k, t_c, k_t = 0;
     if (s.law == LawKind::linear) {
       k = p.k_linear;
       t_c = 3.141592653589793 * std::sqrt(p.m_eff / k);
+      k_t = p.k_tangential;
     } else {
       const double kn = 4.0 / 3.0 * p.e_star * std::sqrt(p.r_eff), v = c.impact_speed;
       const double delta = std::pow(5 * p.m_eff * v * v / (4 * kn), 0.4);
       k = 1.5 * kn * std::sqrt(delta);
       t_c = 2.9432 * delta / v;
+      if (s.tangential == TangentialKind::mindlin) k_t = 8 * p.g_star * std::sqrt(p.r_eff * delta);
     }
     const double bound = 2 / std::sqrt(k / p.m_eff);
     const std::string name = "\"" + s.materials[static_cast<std::size_t>(a)].name + "\"-" + (wall ? "wall " : "") + "\"" +
                              s.materials[static_cast<std::size_t>(b)].name + "\" contact";
     if (bound < c.dt_critical) c.dt_critical = bound, c.governing = name + " (2/sqrt(k/m*))";
+    bool polyhedra = false;
+    for (const auto& t : s.types) polyhedra = polyhedra || !t.is_sphere();
+    const double kappa = polyhedra ? 6.0 : 3.5;
+    const double bound_t = k_t > 0 ? 2 / std::sqrt(kappa * k_t / p.m_eff) : INFINITY;
+    if (bound_t < c.dt_critical) c.dt_critical = bound_t, c.governing = name + ", tangential spring (2/sqrt(kappa k_t/m*))";
     c.contact_time = std::min(c.contact_time, t_c);
   };
   std::vector<bool> particle(s.materials.size()), world(s.materials.size());

@@ -20,12 +20,18 @@ struct SceneError : std::runtime_error {
 };
 
 enum class LawKind { linear, hertz };
+// The tangential law: history-free friction (thesis eq. 2.3), or a tangential spring, the
+// contact's history (Mindlin with Hertz, Cundall-Strack with the linear law).
+enum class TangentialKind { history_free, mindlin, linear_spring };
 enum class PrecisionKind { float32, float64 };
 enum class BackendKind { automatic, cpu, gpu };
 // Particle-particle pairs evaluated from both sides or once (SimulationParams::pairs).
 enum class PairsKind { automatic, both_sides, once };
 
 inline const char* to_string(LawKind k) { return k == LawKind::linear ? "linear" : "hertz"; }
+inline const char* to_string(TangentialKind k) {
+  return k == TangentialKind::history_free ? "history_free" : k == TangentialKind::mindlin ? "mindlin" : "linear_spring";
+}
 inline const char* to_string(PrecisionKind p) { return p == PrecisionKind::float32 ? "float" : "double"; }
 inline const char* to_string(BackendKind b) {
   return b == BackendKind::automatic ? "auto" : b == BackendKind::cpu ? "cpu" : "gpu";
@@ -45,7 +51,8 @@ struct PairSpec {
   double contact_time = 0;        // linear: s, undamped, for the lightest pair of these materials
   double restitution = 1;         // -, (0, 1]
   double friction = 0;            // -, Coulomb mu >= 0
-  double tangential_damping = 0;  // kg/s, K_T of eq. 2.3
+  double tangential_damping = 0;  // kg/s, K_T of eq. 2.3 (history-free law)
+  double tangential_stiffness = 0;  // N/m, linear_spring k_t (0: 2/7 of the normal stiffness)
   bool no_tension = false;        // clamp the normal force at 0 (no attraction near separation)
 };
 
@@ -119,6 +126,7 @@ struct StudyValue {
 struct Scene {
   std::string path;  // the scene file
   LawKind law = LawKind::linear;
+  TangentialKind tangential = TangentialKind::history_free;
   PrecisionKind precision = PrecisionKind::float64;
   BackendKind backend = BackendKind::automatic;
   double dt = 0;                 // s (given, or t_c / steps_per_contact)

@@ -29,14 +29,27 @@ PairTable<Law> build_laws(const Scene& s) {
   using Real = typename Law::real_type;
   PairTable<Law> table;
   for (const auto& p : s.pairs) {
-    const auto friction = HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping);
-    if constexpr (std::is_same_v<Law, LinearLaw<Real>>) {
-      auto normal = LinearSpringDashpot<Real>::from_restitution(linear_stiffness(s, p), p.restitution);
+    const MaterialSpec &ma = s.materials[static_cast<std::size_t>(p.a)], &mb = s.materials[static_cast<std::size_t>(p.b)];
+    if constexpr (std::is_same_v<Law, LinearLaw<Real>> || std::is_same_v<Law, LinearSpringLaw<Real>>) {
+      const double kn = linear_stiffness(s, p);
+      auto normal = LinearSpringDashpot<Real>::from_restitution(kn, p.restitution);
       normal.no_tension = p.no_tension;
-      table.set(p.a, p.b, {normal, friction});
+      if constexpr (std::is_same_v<Law, LinearLaw<Real>>) {
+        table.set(p.a, p.b, {normal, HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping)});
+      } else {
+        const double kt = p.tangential_stiffness > 0 ? p.tangential_stiffness : 2.0 / 7.0 * kn;
+        table.set(p.a, p.b, {normal, TangentialSpring<Real>::linear(p.friction, kt, static_cast<double>(normal.beta))});
+      }
     } else {
       const double e_star = pair_physics(s, p.a, p.b, false).e_star;
-      table.set(p.a, p.b, {Hertz<Real>::from_restitution(e_star, p.restitution, p.no_tension), friction});
+      const auto normal = Hertz<Real>::from_restitution(e_star, p.restitution, p.no_tension);
+      if constexpr (std::is_same_v<Law, HertzLaw<Real>>) {
+        table.set(p.a, p.b, {normal, HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping)});
+      } else {
+        const double g_star = TangentialSpring<Real>::effective_shear_modulus(ma.youngs_modulus, ma.poisson_ratio,
+                                                                               mb.youngs_modulus, mb.poisson_ratio);
+        table.set(p.a, p.b, {normal, TangentialSpring<Real>::mindlin(p.friction, g_star, p.restitution)});
+      }
     }
   }
   return table;
