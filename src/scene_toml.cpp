@@ -390,12 +390,16 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
                                         "domain_lo", "domain_hi", "skin", "pair_evaluation", "force_dt", "max_impact_speed", "seed",
-                                        "force_long_run", "tangential"});
+                                        "force_long_run", "tangential", "rolling"});
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
   s.tangential = static_cast<TangentialKind>(f.choice("tangential", {"history_free", "mindlin", "linear_spring"}, 0));
   if (s.tangential == TangentialKind::mindlin && s.law != LawKind::hertz)
     f.fail(*f.get("tangential"), "tangential", "\"mindlin\" needs law = \"hertz\" (its stiffness 8 G* sqrt(R* delta)); "
                                                "with law = \"linear\": \"history_free\" or \"linear_spring\"");
+  s.rolling = static_cast<RollingKind>(f.choice("rolling", {"none", "cdt", "epsd"}, 0));
+  if (s.rolling != RollingKind::none && s.tangential == TangentialKind::history_free)
+    f.fail(*f.get("rolling"), "rolling", "rolling resistance needs a tangential spring: tangential = \"mindlin\" (Hertz) or "
+                                         "\"linear_spring\" (linear)");
   if (s.tangential == TangentialKind::linear_spring && s.law != LawKind::linear)
     f.fail(*f.get("tangential"), "tangential", "\"linear_spring\" needs law = \"linear\"; with law = \"hertz\": "
                                                "\"history_free\" or \"mindlin\"");
@@ -486,6 +490,8 @@ void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
                                                              : std::vector<std::string>{"materials", "restitution", "friction", "no_tension"};
     if (s.tangential == TangentialKind::history_free) keys.push_back("tangential_damping");
     if (s.tangential == TangentialKind::linear_spring) keys.push_back("tangential_stiffness");
+    if (s.rolling != RollingKind::none) keys.push_back("rolling_friction");
+    if (s.rolling == RollingKind::epsd) keys.push_back("rolling_damping");
     Fields f(*items[k], item_label("pair", k), file, keys);
     PairSpec p;
     const toml::node* mats = f.get("materials");
@@ -514,6 +520,8 @@ void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
     p.friction = f.number_or("friction", 0, {0, 100, false, false, "(Coulomb coefficient)"});
     p.tangential_damping = f.number_or("tangential_damping", 0, non_negative("kg/s (K_T of eq. 2.3)"));
     p.tangential_stiffness = f.number_or("tangential_stiffness", 0, up_to(kMaxModulus, "N/m (k_t; default 2/7 of the normal stiffness)"));
+    p.rolling_friction = f.number_or("rolling_friction", 0, {0, 1, false, false, "(rolling friction coefficient mu_r)"});
+    p.rolling_damping = f.number_or("rolling_damping", 0.3, {0, 10, false, false, "(damping ratio eta_r of the rolling spring)"});
     p.no_tension = f.boolean_or("no_tension", s.law == LawKind::hertz);
     s.pairs.push_back(p);
   }
@@ -551,6 +559,9 @@ void read_types(const toml::table& root, const std::string& file, Scene& s) {
   if (s.types.empty()) throw SceneError(file + ": no [[particle_type]]: at least one is needed");
   if (!s.all_spheres() && s.types.size() > 4)
     throw SceneError(file + ": at most 4 [[particle_type]] when any is a polyhedron (the shape table's size)");
+  if (!s.all_spheres() && s.rolling != RollingKind::none)
+    throw SceneError(s.place("simulation.rolling") + ": rolling resistance is for spheres (a polyhedron resists rolling by its "
+                     "shape); with polyhedra: rolling = \"none\"");
 }
 
 std::vector<std::string> type_names(const Scene& s) {

@@ -253,9 +253,13 @@ int run_law(const Scene& s, const Options& o) {
 
 // The scene's law: normal (linear, Hertz) x tangential (history-free, or the spring: the scene
 // parser pairs Mindlin with Hertz and the linear spring with the linear law).
+// Rolling resistance (spheres only, with a spring: the parser sees to both) takes its own law.
 template <class Real>
 int run_precision(const Scene& s, const Options& o) {
-  const bool spring = s.tangential != TangentialKind::history_free;
+  const bool spring = s.tangential != TangentialKind::history_free, rolling = s.rolling != RollingKind::none;
+  if (rolling)
+    return s.law == LawKind::linear ? run_scene<Real, LinearSpringRollingLaw<Real>, SphereShape>(s, o)
+                                    : run_scene<Real, HertzMindlinRollingLaw<Real>, SphereShape>(s, o);
   if (s.law == LawKind::linear) return spring ? run_law<Real, LinearSpringLaw<Real>>(s, o) : run_law<Real, LinearLaw<Real>>(s, o);
   return spring ? run_law<Real, HertzMindlinLaw<Real>>(s, o) : run_law<Real, HertzLaw<Real>>(s, o);
 }
@@ -271,10 +275,13 @@ int main(int argc, char** argv) try {
     throw SceneError(s.place("simulation.backend") + " = \"gpu\": this is the CPU build (build/cpu/blaze); run build/cuda/blaze");
   if (s.backend == BackendKind::cpu && gpu_build)
     throw SceneError(s.place("simulation.backend") + " = \"cpu\": this is the GPU build (build/cuda/blaze); run build/cpu/blaze");
-  std::printf("blaze: %s, %s law%s, %s, %s (%s)\n", s.path.c_str(), to_string(s.law),
+  std::printf("blaze: %s, %s law%s%s, %s, %s (%s)\n", s.path.c_str(), to_string(s.law),
               s.tangential == TangentialKind::mindlin         ? " + Mindlin tangential spring"
               : s.tangential == TangentialKind::linear_spring ? " + linear tangential spring"
                                                               : "",
+              s.rolling == RollingKind::cdt    ? " + rolling resistance (constant torque)"
+              : s.rolling == RollingKind::epsd ? " + rolling resistance (spring-dashpot)"
+                                               : "",
               to_string(s.precision), DefaultSpace::name, device_name(DefaultSpace{}).c_str());
   std::printf("dt = %.4g s = %.3f of the critical step %.4g s (%s)%s\n", s.dt, s.dt / s.dt_critical, s.dt_critical,
               s.dt_governing.c_str(), s.dt > kSafeStepFraction * s.dt_critical ? ", ABOVE the safe fraction: forced" : "");

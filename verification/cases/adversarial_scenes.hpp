@@ -388,6 +388,25 @@ inline std::vector<Case> cases(bool gpu_build) {
          Expect::rejected, {"tangential_damping"});
   edited("tangential_stiffness with the history-free law", "spheres", {{"tangential_damping = 0.1", "tangential_stiffness = 5e3"}},
          Expect::rejected, {"tangential_stiffness"});
+  const std::pair<std::string, std::string> spring{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\""};
+  for (const char* model : {"cdt", "epsd"})
+    c.push_back({std::string("spheres with rolling ") + model, "spheres",
+                 {{"law = \"linear\"", std::string("law = \"linear\"\ntangential = \"linear_spring\"\nrolling = \"") + model + "\""}, no_kt},
+                 {"pair[0].rolling_friction=0.1"}, Expect::runs, {"rolling resistance"}, false});
+  edited("rolling without a spring", "spheres", {{"law = \"linear\"", "law = \"linear\"\nrolling = \"cdt\""}}, Expect::rejected,
+         {"key 'rolling'", "tangential spring"});
+  edited("rolling with polyhedra", "cubes", {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\"\nrolling = \"epsd\""}},
+         Expect::rejected, {"rolling", "spheres"});
+  edited("rolling_friction without rolling", "spheres", {spring, no_kt, {"friction = 0.3\n", "friction = 0.3\nrolling_friction = 0.1\n"}},
+         Expect::rejected, {"rolling_friction"});
+  for (const auto& v : {"-1", "0", "nan", "2", "1e300"})
+    c.push_back({std::string("odd rolling_friction = ") + v, "spheres",
+                 {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\"\nrolling = \"epsd\""}, no_kt},
+                 {std::string("pair[0].rolling_friction=") + v}, Expect::either, {}, false});
+  for (const auto& v : {"-1", "0", "nan", "\"text\""})
+    c.push_back({std::string("odd rolling_damping = ") + v, "spheres",
+                 {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\"\nrolling = \"epsd\""}, no_kt},
+                 {std::string("pair[0].rolling_damping=") + v}, Expect::either, {}, false});
   for (const auto& v : {"-1", "0", "nan", "1e300", "\"text\""})
     c.push_back({std::string("odd tangential_stiffness = ") + v, "spheres",
                  {{"law = \"linear\"", "law = \"linear\"\ntangential = \"linear_spring\""}, no_kt},

@@ -21,6 +21,9 @@
 // 2 / sqrt(kappa k_t / m*) enters like the normal one; Mindlin's k_t = 8 G* sqrt(R* delta) is taken
 // at the impact overlap delta_max above (G* from the two materials' E and nu).
 //
+// Rolling spring (rolling = "epsd", rolling_resistance.hpp): k_r = 2.25 k_n mu_r^2 R*^2 on a rolling
+// inertia I_r >= 1.4 m* R*^2: dt < 2 / sqrt(k_r / I_r) = 2 / sqrt((2.25/1.4) mu_r^2 k_n / m*).
+//
 // Safe fraction: in a packing with z contacts per particle the fastest mode is at most sqrt(z)
 // times the pair frequency (Gershgorin bound of the stiffness matrix), so dt < 2 / (sqrt(z) w);
 // 0.2 of the pair limit covers z <= 25 (12 for equal spheres). A scene whose dt exceeds that is
@@ -159,6 +162,13 @@ inline CriticalStep critical_step(const Scene& s) {
     const double kappa = polyhedra ? 6.0 : 3.5;
     const double bound_t = k_t > 0 ? 2 / std::sqrt(kappa * k_t / p.m_eff) : INFINITY;
     if (bound_t < c.dt_critical) c.dt_critical = bound_t, c.governing = name + ", tangential spring (2/sqrt(kappa k_t/m*))";
+    // The rolling spring (epsd): k_r = 2.25 k mu_r^2 R*^2 turning a rolling inertia of at least
+    // I + m r^2 = 1.4 m* R*^2 (a sphere about its contact point).
+    const PairSpec* spec = s.pair(a, b);
+    if (s.rolling == RollingKind::epsd && spec && spec->rolling_friction > 0) {
+      const double mu_r = spec->rolling_friction, bound_r = 2 / std::sqrt(2.25 / 1.4 * mu_r * mu_r * k / p.m_eff);
+      if (bound_r < c.dt_critical) c.dt_critical = bound_r, c.governing = name + ", rolling spring (2/sqrt(k_r/I_r))";
+    }
     c.contact_time = std::min(c.contact_time, t_c);
   };
   std::vector<bool> particle(s.materials.size()), world(s.materials.size());

@@ -23,12 +23,16 @@ enum class LawKind { linear, hertz };
 // The tangential law: history-free friction (thesis eq. 2.3), or a tangential spring, the
 // contact's history (Mindlin with Hertz, Cundall-Strack with the linear law).
 enum class TangentialKind { history_free, mindlin, linear_spring };
+// Rolling resistance of spheres (rolling_resistance.hpp): none, constant torque (Ai et al. model A),
+// elastic-plastic spring-dashpot (model C). Needs a tangential spring.
+enum class RollingKind { none, cdt, epsd };
 enum class PrecisionKind { float32, float64 };
 enum class BackendKind { automatic, cpu, gpu };
 // Particle-particle pairs evaluated from both sides or once (SimulationParams::pairs).
 enum class PairsKind { automatic, both_sides, once };
 
 inline const char* to_string(LawKind k) { return k == LawKind::linear ? "linear" : "hertz"; }
+inline const char* to_string(RollingKind k) { return k == RollingKind::none ? "none" : k == RollingKind::cdt ? "cdt" : "epsd"; }
 inline const char* to_string(TangentialKind k) {
   return k == TangentialKind::history_free ? "history_free" : k == TangentialKind::mindlin ? "mindlin" : "linear_spring";
 }
@@ -53,6 +57,8 @@ struct PairSpec {
   double friction = 0;            // -, Coulomb mu >= 0
   double tangential_damping = 0;  // kg/s, K_T of eq. 2.3 (history-free law)
   double tangential_stiffness = 0;  // N/m, linear_spring k_t (0: 2/7 of the normal stiffness)
+  double rolling_friction = 0;      // -, mu_r (rolling resistance)
+  double rolling_damping = 0.3;     // -, eta_r (epsd)
   bool no_tension = false;        // clamp the normal force at 0 (no attraction near separation)
 };
 
@@ -127,6 +133,7 @@ struct Scene {
   std::string path;  // the scene file
   LawKind law = LawKind::linear;
   TangentialKind tangential = TangentialKind::history_free;
+  RollingKind rolling = RollingKind::none;
   PrecisionKind precision = PrecisionKind::float64;
   BackendKind backend = BackendKind::automatic;
   double dt = 0;                 // s (given, or t_c / steps_per_contact)

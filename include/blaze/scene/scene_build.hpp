@@ -30,7 +30,22 @@ PairTable<Law> build_laws(const Scene& s) {
   PairTable<Law> table;
   for (const auto& p : s.pairs) {
     const MaterialSpec &ma = s.materials[static_cast<std::size_t>(p.a)], &mb = s.materials[static_cast<std::size_t>(p.b)];
-    if constexpr (std::is_same_v<Law, LinearLaw<Real>> || std::is_same_v<Law, LinearSpringLaw<Real>>) {
+    const auto rolling = [&] {
+      const RollingModel model = s.rolling == RollingKind::cdt ? RollingModel::cdt : s.rolling == RollingKind::epsd ? RollingModel::epsd : RollingModel::none;
+      return RollingResistance<Real>::make(model, p.rolling_friction, p.rolling_damping);
+    };
+    if constexpr (std::is_same_v<Law, LinearSpringRollingLaw<Real>>) {
+      const double kn = linear_stiffness(s, p);
+      auto normal = LinearSpringDashpot<Real>::from_restitution(kn, p.restitution);
+      normal.no_tension = p.no_tension;
+      const double kt = p.tangential_stiffness > 0 ? p.tangential_stiffness : 2.0 / 7.0 * kn;
+      table.set(p.a, p.b, {normal, TangentialSpring<Real>::linear(p.friction, kt, static_cast<double>(normal.beta)), rolling()});
+    } else if constexpr (std::is_same_v<Law, HertzMindlinRollingLaw<Real>>) {
+      const double g_star = TangentialSpring<Real>::effective_shear_modulus(ma.youngs_modulus, ma.poisson_ratio, mb.youngs_modulus,
+                                                                             mb.poisson_ratio);
+      table.set(p.a, p.b, {Hertz<Real>::from_restitution(pair_physics(s, p.a, p.b, false).e_star, p.restitution, p.no_tension),
+                           TangentialSpring<Real>::mindlin(p.friction, g_star, p.restitution), rolling()});
+    } else if constexpr (std::is_same_v<Law, LinearLaw<Real>> || std::is_same_v<Law, LinearSpringLaw<Real>>) {
       const double kn = linear_stiffness(s, p);
       auto normal = LinearSpringDashpot<Real>::from_restitution(kn, p.restitution);
       normal.no_tension = p.no_tension;

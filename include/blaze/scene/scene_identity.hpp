@@ -55,6 +55,7 @@ inline SceneIdentity scene_identity(const Scene& s) {
   auto add = [&](const std::string& k, const std::string& v) { id.emplace_back(k, v); };
   add("simulation.law", to_string(s.law));
   add("simulation.tangential", to_string(s.tangential));
+  add("simulation.rolling", to_string(s.rolling));
   add("simulation.precision", to_string(s.precision));
   add("simulation.dt", num(s.dt));
   add("simulation.gravity", vec(s.gravity));
@@ -81,6 +82,8 @@ inline SceneIdentity scene_identity(const Scene& s) {
     add(p + "friction", num(q.friction));
     add(p + "tangential_damping", num(q.tangential_damping));
     add(p + "tangential_stiffness", num(q.tangential_stiffness));
+    add(p + "rolling_friction", num(q.rolling_friction));
+    add(p + "rolling_damping", num(q.rolling_damping));
     add(p + "no_tension", q.no_tension ? "true" : "false");
   }
   for (std::size_t k = 0; k < s.types.size(); ++k) {
