@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   blaze::line_buffered_output();
   std::string out_dir = "bench/results";
   long max_n = 0, min_n = 0;
-  std::string cases = "spheres,polyhedra,packed,surfaces,skip,mill", tag_suffix;
+  std::string cases = "spheres,history,polyhedra,packed,surfaces,skip,mill", tag_suffix;
   long largest_spheres = 500000000, largest_cubes = 100000000;
   for (int a = 1; a + 1 < argc; ++a) {
     const std::string opt = argv[a];
@@ -155,6 +155,10 @@ int main(int argc, char** argv) {
       rows.push_back(sphere_case<LinF>("linear", n, warmup, steps));
       rows.push_back(sphere_case<LinD>("linear", n, warmup, steps));
       rows.push_back(sphere_case<HzF>("hertz", n, warmup, steps));
+    }
+    if (wanted("history")) {  // issue 18: Hertz-Mindlin with the contact store, and with rolling resistance
+      rows.push_back(sphere_case<ContactLaw<float, Hertz, TangentialSpring>>("hertz-mindlin", n, warmup, steps));
+      rows.push_back(sphere_case<ContactLaw<float, Hertz, TangentialSpring, RollingResistance>>("mindlin-epsd", n, warmup, steps));
     }
     // Polyhedra: fewer steps from 1e6 (GPU) / 1e4 (CPU) up, so that each case takes seconds.
     const long poly_steps = std::clamp((gpu ? 400000000L : 2000000L) / n, 10L, 400L);

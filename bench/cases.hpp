@@ -55,6 +55,22 @@ inline ContactLaw<float, Hertz, HistoryFreeFriction> make_law() {
   return {Hertz<float>::from_stiffness(2.3e6, 0.5 * kRadius, 20), HistoryFreeFriction<float>::make(0.4, 0.05)};
 }
 
+// Hertz-Mindlin with contact history (issue 18): the same Hertz spring, a Mindlin tangential spring
+// for a material of nu = 0.3 (G* = E* (1 - nu) / (2 (2 - nu))), the same restitution and friction.
+inline Hertz<float> bench_hertz() { return Hertz<float>::from_restitution(0.75 * 2.3e6 / std::sqrt(0.5 * kRadius), 0.5, true); }
+inline TangentialSpring<float> bench_mindlin() {
+  return TangentialSpring<float>::mindlin(0.4, 0.75 * 2.3e6 / std::sqrt(0.5 * kRadius) * 0.7 / 3.4, 0.5);
+}
+template <>
+inline ContactLaw<float, Hertz, TangentialSpring> make_law() {
+  return {bench_hertz(), bench_mindlin()};
+}
+// ... and rolling resistance, the elastic-plastic spring (its state kept too).
+template <>
+inline ContactLaw<float, Hertz, TangentialSpring, RollingResistance> make_law() {
+  return {bench_hertz(), bench_mindlin(), RollingResistance<float>::make(RollingModel::epsd, 0.1, 0.3)};
+}
+
 inline double g_skin_fraction = 0.2;  // neighbour-list skin / radius (--skin)
 
 // How the cases evaluate their pairs (--pairs auto|both_sides|once; SimulationParams::pairs).
