@@ -49,7 +49,8 @@ struct WorldForces {
       const Vec3<Real> vi = p.velocity.get(i);
       const Law& law = laws(p.material[i], material);
       const Real m_eff = Real(1) / p.inv_mass[i];
-      int h = -1;
+      int h = -1;  // the contact's slot (laws with history)
+      (void)h;
       auto state = typename Law::State{};
       if constexpr (Law::kHistory) {
         h = history.slot(i, w);
