@@ -2,7 +2,7 @@
 // (a diagnostic: Simulation::contact_energy() runs it only when a sample is taken, never inside
 // the step). One thread per particle i:
 //   pairs  sum over i's neighbours j > i of Law(m_i, m_j).stored_energy(collide(i, j), state)  [J]
-//          (the state: i's copy of the pair's, for a tangential spring's 1/2 k_t |s|^2)
+//          (the state: i's copy of the pair's, for a tangential spring's |F_e|^2 / (2 k_t))
 //          (each pair once, from its lower index, with the very call ContactForces and
 //          PairForces make for that pair: collide(lower, higher) on the same list);
 //   walls  sum over the planar polygons and cylinders w of Law(m_i, m_w).stored_energy(

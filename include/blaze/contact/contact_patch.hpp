@@ -120,7 +120,7 @@ BLAZE_HD_INLINE ContactForce<Real> contact_patch_force(const Law& law, const Pat
       force += f;
       moment += cross(g.patch.point[k] - g.point, f);
     }
-    const TangentialInput<Real> in{n, g.overlap, g.r_eff, slip_c, f_n, m_eff, dt};
+    const TangentialInput<Real> in{n, g.overlap, g.r_eff, slip_c, dot(v_c, n), f_n, m_eff, dt};
     const TangentialForce<Real> t = law.tangential.force(in, state, 0);
     return {force + t.force, moment, t.sliding};
   }

@@ -58,7 +58,7 @@ struct ContactLaw {
                                        Real dt) const {
     const Real v_n = dot(m.v_rel, g.normal);
     const Real f_n = normal.normal_force(g.overlap, v_n, m.m_eff, g.r_eff);
-    const TangentialInput<Real> in{g.normal, g.overlap, g.r_eff, m.v_rel - v_n * g.normal, f_n, m.m_eff, dt};
+    const TangentialInput<Real> in{g.normal, g.overlap, g.r_eff, m.v_rel - v_n * g.normal, v_n, f_n, m.m_eff, dt};
     const TangentialForce<Real> t = tangential.force(in, state, 0);
     ContactForce<Real> out{g.normal * (-f_n) + t.force, {0, 0, 0}, t.sliding};
     if constexpr (kRolling)
@@ -81,7 +81,7 @@ struct ContactLaw {
   }
 
   // Elastic energy the contact holds (J, double): the normal spring's potential
-  // (NormalLaw::stored_energy, equation in its header) plus a tangential spring's 1/2 k_t |s|^2
+  // (NormalLaw::stored_energy, equation in its header) plus a tangential spring's |F_e|^2 / (2 k_t)
   // from the contact's state: the one place Simulation::contact_energy() and the time series read.
   BLAZE_HD double stored_energy(const ContactGeometry<Real>& g, const State& state = State::zero()) const {
     double e = normal.stored_energy(g.overlap, g.r_eff);

@@ -1,13 +1,16 @@
 // Tangential spring with a Coulomb limit: the contact's history (Cundall & Strack 1979 for the
-// linear law; Mindlin & Deresiewicz 1953, no-slip stiffness, for Hertz; the form of LIGGGHTS
-// hooke/history and hertz/history and of Chrono DEM-Engine). Per step, for a touching contact:
+// linear law; Mindlin & Deresiewicz 1953, no-slip stiffness, for Hertz, in the incremental force
+// form of Thornton, Cummins & Cleary, Powder Technol. 210 (2011) 189). The state is the spring's
+// elastic force F_e (N, on i). Per step, for a touching contact:
 //
-//   s  <- |s| (s - (s.n) n) / |s - (s.n) n|      the stored spring turned into the current tangent
-//                                                plane (the normal has turned), its length kept
-//   s  <- s + v_t dt                             tangential displacement, m
-//   F  =  -k_t s - c_t v_t                       trial tangential force on i, N
-//   |F| > mu F_n:  F <- mu F_n F / |F|,   s <- -(F + c_t v_t) / k_t     (sliding: spring truncated)
-//   F_n <= 0 (a pulling dashpot):  F = 0, s = 0 (a contact that pulls transmits no friction)
+//   F_e <- |F_e| (F_e - (F_e.n) n) / |F_e - (F_e.n) n|   turned into the current tangent plane (the
+//                                                    normal has turned), its size kept
+//   unloading (v_n < 0):  F_e <- F_e k_t(delta) / k_t(delta - v_n dt)   the spring softens with the
+//                                                    overlap (Mindlin: sqrt(delta / delta_prev))
+//   F_e <- F_e - k_t(delta) v_t dt                   the increment of the elastic force
+//   F   =  F_e - c_t v_t                             tangential force on i (N)
+//   |F| > mu F_n:  F <- mu F_n F / |F|,  F_e <- F + c_t v_t   (sliding: the spring truncated)
+//   F_n <= 0 (a pulling dashpot): F = 0, F_e = 0 (a contact that pulls transmits no friction)
 //
 //   k_t = k_0 + k_hat sqrt(R* delta)   N/m. Linear law: k_0 given (default 2/7 k_n, which gives a
 //          sphere's tangential oscillation the normal one's period), k_hat = 0. Hertz (Mindlin):
@@ -15,16 +18,24 @@
 //   c_t = beta_t sqrt(k_t m*)          kg/s, from the pair's restitution e: linear beta_t =
 //          -2 ln e / sqrt(ln^2 e + pi^2) (the normal law's beta); Hertz beta_t = sqrt(5/6) times
 //          that (LIGGGHTS: gamma_t = -2 sqrt(5/6) beta sqrt(S_t m*), S_t = k_t).
-//   Stored elastic energy 1/2 k_t |s|^2 (J).
+//   Stored elastic energy |F_e|^2 / (2 k_t) (J).
 //
-// v_t: tangential slip velocity at the contact point (m/s); n: contact normal; F_n: normal force
-// (N, > 0 pushing); dt: the time step (s). The state is the spring s (3 reals, m); each side of a
-// pair keeps its own copy, the exact negation of the other's (every operation above is odd in
-// (s, v_t, n) together, so the two stay mirrored to the last bit). A contact is "sliding" when
-// the Coulomb limit truncated it this step, "sticking" otherwise.
+// Why the force and not the displacement s with F = -k_t(delta) s (LIGGGHTS): with k_t growing
+// with the overlap, the total form raises the stored energy 1/2 k_t |s|^2 without work while the
+// contact loads: an elastic (e = 1) sphere sticking in an oblique impact gained 40% of the
+// spring's peak energy during the contact and kept 1.3% of it after (test_contact_history.cpp).
+// The increments never create energy: the turning keeps |F_e|, a loading increment stores at most
+// the work done (material entering the contact carries no tangential stress: Mindlin &
+// Deresiewicz), and the softening on unloading gives up the stress of the area leaving the
+// contact without work, which is dissipated (the same impact keeps E(t) <= E_0 throughout and
+// loses most of the spring's peak energy at small angles; Chung & Ooi tests 4-8 compare the
+// rebound with Maw, Barber & Fawcett's theory).
 //
-// Stiffness and total force (F = -k_t(delta) s) rather than force increments: when delta falls,
-// F falls with k_t; the spring's rotation keeps |s|, so it neither stores nor releases energy.
+// v_t: tangential slip velocity at the contact point (m/s); v_n: normal approach speed (m/s,
+// > 0 closing); n: contact normal; F_n: normal force (N, > 0 pushing); dt: the time step (s).
+// Each side of a pair keeps its own copy of F_e, the exact negation of the other's (every
+// operation above is odd in (F_e, v_t, n) together and even in v_n, so the two stay mirrored to
+// the last bit). A contact is "sliding" when the Coulomb limit truncated it this step.
 #pragma once
 #include <cmath>
 #include <stdexcept>
@@ -40,6 +51,7 @@ struct TangentialInput {
   Real overlap;       // m
   Real r_eff;         // m
   Vec3<Real> v_t;     // m/s
+  Real v_n;           // m/s, approach speed (> 0 closing)
   Real f_n;           // N
   Real m_eff;         // kg
   Real dt;            // s
@@ -54,7 +66,7 @@ struct TangentialForce {
 
 template <class Real>
 struct TangentialSpring {
-  static constexpr int kStateReals = 3;  // the spring s, m
+  static constexpr int kStateReals = 3;  // the spring's elastic force F_e, N
   Real mu;        // -, Coulomb coefficient
   Real k0;        // N/m
   Real k_hat;     // Pa (8 G*), times sqrt(R* delta)
@@ -95,34 +107,39 @@ struct TangentialSpring {
       state.set(at, {0, 0, 0});
       return {{0, 0, 0}, false};
     }
-    Vec3<Real> s = state.vec(at);
-    const Real length2 = norm2(s);
-    if (length2 > Real(0)) {
-      s -= dot(s, in.normal) * in.normal;
-      const Real turned2 = norm2(s);
-      if (turned2 > Real(0)) s *= sqrt_r(length2 / turned2);
-    }
-    s += in.v_t * in.dt;
+    Vec3<Real> fe = state.vec(at);
     const Real kt = stiffness(in.overlap, in.r_eff);
+    const Real size2 = norm2(fe);
+    if (size2 > Real(0)) {
+      fe -= dot(fe, in.normal) * in.normal;
+      const Real turned2 = norm2(fe);
+      Real scale2 = turned2 > Real(0) ? size2 / turned2 : Real(1);
+      if (k_hat != Real(0) && in.v_n < Real(0)) {  // unloading: k_t(delta) / k_t(delta_prev), squared
+        const Real before = stiffness(in.overlap - in.v_n * in.dt, in.r_eff);
+        scale2 *= (kt * kt) / (before * before);
+      }
+      fe *= sqrt_r(scale2);
+    }
+    fe -= in.v_t * (kt * in.dt);
     const Vec3<Real> damping = in.v_t * (beta * sqrt_r(kt * in.m_eff));  // c_t v_t
-    Vec3<Real> f = -(s * kt + damping);
+    Vec3<Real> f = fe - damping;
     const Real f2 = norm2(f);
     const bool sliding = f2 > cap * cap;
     if (sliding) {
       f *= cap / sqrt_r(f2);
-      s = -(f + damping) * (Real(1) / kt);
+      fe = f + damping;
     }
-    state.set(at, s);
+    state.set(at, fe);
     return {f, sliding};
   }
 
-  // 1/2 k_t |s|^2 (J), in double.
+  // |F_e|^2 / (2 k_t) (J), in double.
   template <class State>
   BLAZE_HD double stored_energy(Real delta, Real r_eff, const State& state, int at) const {
     const double kt = static_cast<double>(stiffness(delta, r_eff));
-    const Vec3<Real> s = state.vec(at);
-    const double sx = s.x, sy = s.y, sz = s.z;
-    return 0.5 * kt * (sx * sx + sy * sy + sz * sz);
+    const Vec3<Real> fe = state.vec(at);
+    const double fx = fe.x, fy = fe.y, fz = fe.z;
+    return kt > 0 ? 0.5 * (fx * fx + fy * fy + fz * fz) / kt : 0.0;
   }
 
  private:
