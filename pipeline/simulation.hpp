@@ -110,7 +110,10 @@ class Simulation {
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     configure_contacts(world);
     first_build();
-    run_phases(Space{}, store_.size(), step_phases(), kFirstForcePhase, kPostForcePhase, timer_);
+    // The forces at t = 0 for the integrator's first kick. A contact state advances by the slip
+    // over a step, and no step has been taken: the history sees dt = 0 (LIGGGHTS's setup likewise
+    // leaves the shear history alone), so the first step's increment is the first one.
+    run_phases(Space{}, store_.size(), step_phases(Real(0)), kFirstForcePhase, kPostForcePhase, timer_);
     for_each(Space{}, store_.size(), integrate<Stage::prime>());
   }
 
@@ -319,7 +322,8 @@ class Simulation {
   // or not. Builds the functors from the current views (a rebuild moves and resizes them), after
   // sizing what they write (statistics, pair slots).
   static constexpr int kRebuildCheck = 1, kFirstForcePhase = 2, kPostForcePhase = 6;
-  auto step_phases() {
+  // history_dt: the step the contact states advance by (0 for the forces at t = 0).
+  auto step_phases(Real history_dt) {
     prepare_statistics();
     const bool once = params_.pairs == PairEvaluation::once;
     const PairSlots<Real> slots = once ? pair_slots() : PairSlots<Real>{};
@@ -328,10 +332,10 @@ class Simulation {
     auto phases = make_phases(
         kernel_phase("integrate", integrate<Stage::pre_force>()),
         check_phase("rebuild-check", broad_.rebuild_check_functor(store_)),
-        kernel_phase("contacts", contact_forces(), !once),
-        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), params_.dt}, once),
+        kernel_phase("contacts", contact_forces(history_dt), !once),
+        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt}, once),
         kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats()}, once),
-        kernel_phase("walls", world_forces(), !world_.empty()),
+        kernel_phase("walls", world_forces(history_dt), !world_.empty()),
         kernel_phase("integrate", integrate<Stage::post_force>()));
     static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");
     return phases;
@@ -341,7 +345,7 @@ class Simulation {
   // after it follow.
   void finish_step(int from) {
     for (;;) {
-      const PhaseStop stop = run_phases(Space{}, store_.size(), step_phases(), from, kPostForcePhase + 1, timer_);
+      const PhaseStop stop = run_phases(Space{}, store_.size(), step_phases(params_.dt), from, kPostForcePhase + 1, timer_);
       if (stop.index < 0) break;
       on_check(stop);
       from = stop.index + 1;
@@ -387,7 +391,7 @@ class Simulation {
       const std::uint64_t k = std::min(batch_, steps);
       flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
-      fused_steps(Space{}, store_.size(), k, step_phases(), flags_.data());
+      fused_steps(Space{}, store_.size(), k, step_phases(params_.dt), flags_.data());
       const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
       const auto j = static_cast<std::uint64_t>(std::find_if(flags.begin(), flags.end(), [](int f) { return f != 0; }) - flags.begin());
       steps_ += j;
@@ -449,11 +453,11 @@ class Simulation {
     if constexpr (Features::statistics) return {stats_vertex_face_.data(), stats_edge_edge_.data()};
     return {nullptr, nullptr};
   }
-  ContactForces<Shape, Law, Kinematics, Features> contact_forces() {
-    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), params_.dt};
+  ContactForces<Shape, Law, Kinematics, Features> contact_forces(Real history_dt) {
+    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), history_dt};
   }
-  WorldForces<Shape, Law, Kinematics, Features> world_forces() {
-    return {shape_, store_.view(), world_.view(), laws_, contacts_.walls(), params_.dt};
+  WorldForces<Shape, Law, Kinematics, Features> world_forces(Real history_dt) {
+    return {shape_, store_.view(), world_.view(), laws_, contacts_.walls(), history_dt};
   }
 
   // Pairs once: the slots, one per list entry (grown with the list, never shrunk).
