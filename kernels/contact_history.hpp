@@ -85,25 +85,38 @@ struct WallHistoryView {
 
 // After a rebuild: new entry (k, i) takes the state of the entry of the same pair in the previous
 // list (row order[i], partner order[j]) or zero; one field, from `in` (previous layout) to `out`.
+// Pairs evaluated once (`once`) keep the state at the lower index's entry only, and a re-sort may
+// swap which of the two is lower: the owner's entry then takes the other side's old state,
+// negated (the two sides' states are exact negations), and the other entry is zero.
 template <class Real>
 struct RemapPairHistory {
   NeighbourView list, previous;
   const Index* order;  // particle i of the new order was particle order[i] of the previous one
   const Real* in;
   Real* out;
+  bool once;
 
+  // The previous entry of row `row` for partner `partner`, or -1.
+  BLAZE_HD long find(Index row, Index partner) const {
+    const Index count = min_r(previous.count[row], previous.capacity);
+    for (Index m = 0; m < count; ++m)
+      if (previous.at(m, row) == partner) return static_cast<long>(previous.offset(m, row));
+    return -1;
+  }
   BLAZE_HD void operator()(Index i) const {
     const Index o = order[i];
     const Index count = min_r(list.count[i], list.capacity);
-    const Index old_count = min_r(previous.count[o], previous.capacity);
     for (Index k = 0; k < count; ++k) {
-      const Index was = order[list.at(k, i)];
+      const Index j = list.at(k, i);
+      const Index was = order[j];
       Real v = 0;
-      for (Index m = 0; m < old_count; ++m)
-        if (previous.at(m, o) == was) {
-          v = in[previous.offset(m, o)];
-          break;
-        }
+      if (!once) {
+        const long e = find(o, was);
+        if (e >= 0) v = in[e];
+      } else if (i < j) {  // the owner now; it was the owner before iff o < was
+        const long e = o < was ? find(o, was) : find(was, o);
+        if (e >= 0) v = o < was ? in[e] : -in[e];
+      }
       out[list.offset(k, i)] = v;
     }
   }

@@ -65,12 +65,13 @@ class ContactStore {
   }
 
   // After a rebuild (sort, removal, new list): carry every state to its contact's new place.
-  void after_rebuild(const NeighbourView& list, const NeighbourView& previous, const Index* order, Index n) {
+  // once: pairs evaluated once (the lower index's entry holds the state).
+  void after_rebuild(const NeighbourView& list, const NeighbourView& previous, const Index* order, Index n, bool once) {
     if (!active()) return;
     const std::size_t entries = static_cast<std::size_t>(list.capacity) * static_cast<std::size_t>(list.stride);
     for (int c = 0; c < used_; ++c) {
       scratch_.resize(std::max(scratch_.size(), entries));
-      for_each(Space{}, n, RemapPairHistory<Real>{list, previous, order, pair_[c].data(), scratch_.data()});
+      for_each(Space{}, n, RemapPairHistory<Real>{list, previous, order, pair_[c].data(), scratch_.data(), once});
       pair_[c].swap(scratch_);
     }
     // Wall slots: grown by one when a contact found none free since the last rebuild.
@@ -142,9 +143,12 @@ class ContactStore {
     for (Index i = 0; i < n; ++i)
       for (Index k = 0; k < std::min(count[i], list.capacity); ++k) {
         const std::size_t e = list.offset(k, i);
-        const auto it = pairs.find({id[i], id[index[e]]});
+        // i's own copy, or (pairs once, when the other particle held it) the other's negated
+        auto it = pairs.find({id[i], id[index[e]]});
+        Real sign = 1;
+        if (it == pairs.end()) it = pairs.find({id[index[e]], id[i]}), sign = -1;
         if (it == pairs.end()) continue;
-        for (int c = 0; c < used_; ++c) f[c][e] = s.pair_values[it->second * used_ + c];
+        for (int c = 0; c < used_; ++c) f[c][e] = sign * s.pair_values[it->second * used_ + c];
       }
     for (int c = 0; c < used_; ++c) from_host(pair_[c], f[c]);
     std::map<Index, Index> row;

@@ -365,7 +365,8 @@ class Simulation {
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity, with_forces));
     if constexpr (Law::kHistory)
       timer_.time("neighbours", [&] {
-        contacts_.after_rebuild(broad_.neighbours(), broad_.previous_neighbours(), broad_.order(), store_.size());
+        contacts_.after_rebuild(broad_.neighbours(), broad_.previous_neighbours(), broad_.order(), store_.size(),
+                                params_.pairs == PairEvaluation::once);
       });
   }
   // The store's reals per contact (all the law's state), and its wall slots (one per world object
