@@ -23,49 +23,46 @@
 
 namespace blaze {
 
-// Contact laws for every material pair of the scene.
+// Contact laws for every material pair of the scene: each Law is built from its parts, the
+// normal law (linear or Hertz), the tangential law (history-free, or the spring) and, for the
+// rolling laws, the rolling resistance. The scene parser has paired them (tangential with law,
+// rolling with a spring).
 template <class Law>
 PairTable<Law> build_laws(const Scene& s) {
   using Real = typename Law::real_type;
+  using Normal = decltype(Law::normal);
+  using Tangential = decltype(Law::tangential);
+  constexpr bool linear = std::is_same_v<Normal, LinearSpringDashpot<Real>>;
   PairTable<Law> table;
   for (const auto& p : s.pairs) {
     const MaterialSpec &ma = s.materials[static_cast<std::size_t>(p.a)], &mb = s.materials[static_cast<std::size_t>(p.b)];
-    const auto rolling = [&] {
-      const RollingModel model = s.rolling == RollingKind::cdt ? RollingModel::cdt : s.rolling == RollingKind::epsd ? RollingModel::epsd : RollingModel::none;
-      return RollingResistance<Real>::make(model, p.rolling_friction, p.rolling_damping);
-    };
-    if constexpr (std::is_same_v<Law, LinearSpringRollingLaw<Real>>) {
-      const double kn = linear_stiffness(s, p);
-      auto normal = LinearSpringDashpot<Real>::from_restitution(kn, p.restitution);
+    const double kn = linear ? linear_stiffness(s, p) : 0;
+    Normal normal;
+    if constexpr (linear) {
+      normal = LinearSpringDashpot<Real>::from_restitution(kn, p.restitution);
       normal.no_tension = p.no_tension;
-      const double kt = p.tangential_stiffness > 0 ? p.tangential_stiffness : 2.0 / 7.0 * kn;
-      table.set(p.a, p.b, {normal, TangentialSpring<Real>::linear(p.friction, kt, static_cast<double>(normal.beta)), rolling()});
-    } else if constexpr (std::is_same_v<Law, HertzMindlinRollingLaw<Real>>) {
-      const double g_star = TangentialSpring<Real>::effective_shear_modulus(ma.youngs_modulus, ma.poisson_ratio, mb.youngs_modulus,
-                                                                             mb.poisson_ratio);
-      table.set(p.a, p.b, {Hertz<Real>::from_restitution(pair_physics(s, p.a, p.b, false).e_star, p.restitution, p.no_tension),
-                           TangentialSpring<Real>::mindlin(p.friction, g_star, p.restitution), rolling()});
-    } else if constexpr (std::is_same_v<Law, LinearLaw<Real>> || std::is_same_v<Law, LinearSpringLaw<Real>>) {
-      const double kn = linear_stiffness(s, p);
-      auto normal = LinearSpringDashpot<Real>::from_restitution(kn, p.restitution);
-      normal.no_tension = p.no_tension;
-      if constexpr (std::is_same_v<Law, LinearLaw<Real>>) {
-        table.set(p.a, p.b, {normal, HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping)});
-      } else {
-        const double kt = p.tangential_stiffness > 0 ? p.tangential_stiffness : 2.0 / 7.0 * kn;
-        table.set(p.a, p.b, {normal, TangentialSpring<Real>::linear(p.friction, kt, static_cast<double>(normal.beta))});
-      }
     } else {
-      const double e_star = pair_physics(s, p.a, p.b, false).e_star;
-      const auto normal = Hertz<Real>::from_restitution(e_star, p.restitution, p.no_tension);
-      if constexpr (std::is_same_v<Law, HertzLaw<Real>>) {
-        table.set(p.a, p.b, {normal, HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping)});
-      } else {
-        const double g_star = TangentialSpring<Real>::effective_shear_modulus(ma.youngs_modulus, ma.poisson_ratio,
-                                                                               mb.youngs_modulus, mb.poisson_ratio);
-        table.set(p.a, p.b, {normal, TangentialSpring<Real>::mindlin(p.friction, g_star, p.restitution)});
-      }
+      normal = Hertz<Real>::from_restitution(pair_physics(s, p.a, p.b, false).e_star, p.restitution, p.no_tension);
     }
+    Tangential tangential;
+    if constexpr (std::is_same_v<Tangential, HistoryFreeFriction<Real>>) {
+      tangential = HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping);
+    } else if constexpr (linear) {
+      const double kt = p.tangential_stiffness > 0 ? p.tangential_stiffness : 2.0 / 7.0 * kn;
+      tangential = TangentialSpring<Real>::linear(p.friction, kt, static_cast<double>(normal.beta));
+    } else {
+      const double g_star = TangentialSpring<Real>::effective_shear_modulus(ma.youngs_modulus, ma.poisson_ratio,
+                                                                             mb.youngs_modulus, mb.poisson_ratio);
+      tangential = TangentialSpring<Real>::mindlin(p.friction, g_star, p.restitution);
+    }
+    Law law{normal, tangential};
+    if constexpr (Law::kRolling) {
+      const RollingModel model = s.rolling == RollingKind::cdt    ? RollingModel::cdt
+                                 : s.rolling == RollingKind::epsd ? RollingModel::epsd
+                                                                  : RollingModel::none;
+      law.rolling = RollingResistance<Real>::make(model, p.rolling_friction, p.rolling_damping);
+    }
+    table.set(p.a, p.b, law);
   }
   return table;
 }
