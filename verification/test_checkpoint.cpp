@@ -67,10 +67,11 @@ Law packing_law(double k) {
 
 // Law: the history-free linear law, or the linear spring (its contact store goes through the file).
 template <class Real, class Integrator, class Law = LinearLaw<Real>>
-void sphere_restart(const char* label) {
+void sphere_restart(const char* label, PairEvaluation pairs = PairEvaluation::both_sides) {
   const double r = 2e-3, m = 2500 * 4.0 / 3.0 * kPi * r * r * r, k = 1e5;
   const double dt = kPi * std::sqrt(0.5 * m / k) / 25;
-  const auto scene = gravity_packing<Real>(300, r, 77, dt);
+  auto scene = gravity_packing<Real>(300, r, 77, dt);
+  scene.params.pairs = pairs;
   const Law law = packing_law<Law>(k);
   using Sim = Simulation<DefaultSpace, SphereShape, Law, Integrator>;
   const auto laws = one_law(law);
@@ -101,6 +102,8 @@ BOOST_AUTO_TEST_CASE(sphere_restart_is_bitwise_half_step_float) { sphere_restart
 BOOST_AUTO_TEST_CASE(sphere_restart_with_history_is_bitwise) {
   sphere_restart<double, VelocityVerlet, LinearSpringLaw<double>>("spring_double");
   sphere_restart<float, VelocityVerlet, LinearSpringLaw<float>>("spring_float");
+  // pairs once: the state sits with the lower index only, and the restart finds it by ids
+  sphere_restart<double, VelocityVerlet, LinearSpringLaw<double>>("spring_once", PairEvaluation::once);
 }
 
 BOOST_AUTO_TEST_CASE(polyhedron_restart_is_bitwise) {
