@@ -19,7 +19,7 @@ namespace blaze {
 template <class Shape, class Law, class Kinematics, class Features>
 struct ContactForces {
   using Real = typename Law::real_type;
-  static constexpr int kMinBlocks = min_blocks_v<Shape>;  // launch.hpp
+  static constexpr int kMinBlocks = history_min_blocks<Law>(min_blocks_v<Shape>, BLAZE_HISTORY_CONTACT_MIN_BLOCKS);  // launch.hpp
   Shape shape;
   ParticleView<Real> p;
   NeighbourView list;

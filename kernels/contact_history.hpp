@@ -19,6 +19,20 @@
 
 namespace blaze {
 
+// Blocks of 256 threads per SM that the contact and wall kernels of a law with history ask for
+// (launch.hpp: 4 caps the registers at 64). The macros set them for lever measurements
+// (bench/results/levers/); 0 keeps the shape's own bound.
+#ifndef BLAZE_HISTORY_CONTACT_MIN_BLOCKS
+#define BLAZE_HISTORY_CONTACT_MIN_BLOCKS 0
+#endif
+#ifndef BLAZE_HISTORY_WALL_MIN_BLOCKS
+#define BLAZE_HISTORY_WALL_MIN_BLOCKS 0
+#endif
+template <class Law>
+constexpr int history_min_blocks(int shape_blocks, int history_blocks) {
+  return Law::kHistory && history_blocks > shape_blocks ? history_blocks : shape_blocks;
+}
+
 template <class Real, int N>
 struct PairHistoryView {
   using State = ContactState<Real, N>;

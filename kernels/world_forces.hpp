@@ -21,7 +21,8 @@ template <class Shape, class Law, class Kinematics, class Features>
 struct WorldForces {
   using Real = typename Law::real_type;
   // The shape's bound, or (256, 1) for spheres: 0.22 against 0.29 ms per step without it (1e7, H200; launch.hpp).
-  static constexpr int kMinBlocks = min_blocks_v<Shape> > 0 ? min_blocks_v<Shape> : 1;
+  static constexpr int kMinBlocks =
+      history_min_blocks<Law>(min_blocks_v<Shape> > 0 ? min_blocks_v<Shape> : 1, BLAZE_HISTORY_WALL_MIN_BLOCKS);
   Shape shape;
   ParticleView<Real> p;
   WorldView<Real> world;

@@ -1,5 +1,5 @@
 // blaze: runs a scene file (README.md, "Scene files").
-//   blaze run SCENE.toml [--set key=value]... [--quiet] [--check]
+//   blaze run SCENE.toml [--set key=value]... [--quiet] [--check] [--phases]
 //   blaze --help
 // One binary per backend: build/cpu/blaze (OpenMP) and build/cuda/blaze (GPU). The scene picks
 // the precision (float, double), the law (linear, hertz) and, through its particle types, the
@@ -44,6 +44,8 @@ const char* kUsage =
     "                   series and frames after the checkpoint's time are replaced)\n"
     "  --quiet          no progress line (on a terminal it is redrawn twice a second; into a\n"
     "                   file or pipe a line is written every minute)\n"
+    "  --phases         time every phase of the step (one synchronisation per phase: a few\n"
+    "                   percent slower) and print the split per step at the end\n"
     "  --check          validate the scene, print the critical time step, the sizes and the\n"
     "                   memory estimate (host and GPU) against this machine, and stop\n"
     "  --help, -h       this text\n"
@@ -59,7 +61,7 @@ const char* kUsage =
 struct Options {
   std::string scene, restart;
   std::vector<std::string> overrides;
-  bool quiet = false, check = false;
+  bool quiet = false, check = false, phases = false;
 };
 
 Options parse_args(int argc, char** argv) {
@@ -80,6 +82,7 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--restart" && k + 1 < argc) o.restart = argv[++k];
     else if (a == "--quiet") o.quiet = true;
     else if (a == "--check") o.check = true;
+    else if (a == "--phases") o.phases = true;
     else if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
@@ -180,6 +183,9 @@ int run_scene(const Scene& s, const Options& o) {
   Progress progress(!o.quiet, s.end_time);
   double particle_steps = 0;
   const std::uint64_t first = sim.steps();
+  const std::uint64_t builds_before = sim.neighbour_builds();
+  sim.timer().enabled = o.phases;
+  double output_seconds = 0;  // samples, frames and checkpoints (host time, the GPU idle meanwhile)
   const auto loop_start = std::chrono::steady_clock::now();
   // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
   const auto stop = [&](const std::exception& e) {
@@ -201,6 +207,7 @@ int run_scene(const Scene& s, const Options& o) {
     const bool resumed = k == first && first > 0;  // that sample is in the files already
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
+    const auto output_start = std::chrono::steady_clock::now();
     if (checkpoint_every && k > first && k % checkpoint_every == 0)
       write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save());
     if (write_csv || write_vtu) {
@@ -219,6 +226,7 @@ int run_scene(const Scene& s, const Options& o) {
         }
       }
     }
+    output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
     if (k >= steps) break;  // (a restart may begin at or past the end)
     const std::uint64_t next = next_event(k);
     sim.run(next - k);
@@ -242,6 +250,17 @@ int run_scene(const Scene& s, const Options& o) {
   std::printf("\n");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   std::printf("wall time %.3f s for the steps and output, %.4g particle-steps/s\n", wall, wall > 0 ? particle_steps / wall : 0.0);
+  const double stepping = wall - output_seconds;
+  const std::uint64_t taken = sim.steps() - first, builds = sim.neighbour_builds() - builds_before;
+  std::printf("  steps %.3f s (%.4g particle-steps/s), output %.3f s (%.0f%%); %llu neighbour-list builds (every %.3g steps)\n",
+              stepping, stepping > 0 ? particle_steps / stepping : 0.0, output_seconds, wall > 0 ? 100 * output_seconds / wall : 0.0,
+              static_cast<unsigned long long>(builds), builds ? static_cast<double>(taken) / static_cast<double>(builds) : 0.0);
+  if (o.phases && taken > 0) {  // per step, GPU time on the GPU (phase_timer.hpp)
+    std::printf("  phases, ms per step:");
+    for (const auto& [phase, seconds] : sim.timer().seconds())
+      std::printf(" %s %.4g", phase.c_str(), 1e3 * seconds / static_cast<double>(taken));
+    std::printf("\n");
+  }
   std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)\n", dir.c_str(), dir.c_str(), frame);
   return 0;
 }
