@@ -110,25 +110,35 @@ struct RemapPairHistory {
   Real* out;
   bool once;
 
-  // The previous entry of row `row` for partner `partner`, or -1.
-  BLAZE_HD long find(Index row, Index partner) const {
+  // The previous entry of row `row` for partner `partner`, or -1. The search starts at `from`
+  // and wraps: a row rebuilt from the same cells lists its partners in the same order, so with
+  // `from` just past the last match it takes one probe per entry (a full scan of the row each
+  // took 12 x 12 index reads per particle in a dense bed).
+  BLAZE_HD long find(Index row, Index partner, Index& from) const {
     const Index count = min_r(previous.count[row], previous.capacity);
-    for (Index m = 0; m < count; ++m)
-      if (previous.at(m, row) == partner) return static_cast<long>(previous.offset(m, row));
+    for (Index t = 0; t < count; ++t) {
+      const Index m = from + t < count ? from + t : from + t - count;
+      if (previous.at(m, row) == partner) {
+        from = m + 1;
+        return static_cast<long>(previous.offset(m, row));
+      }
+    }
     return -1;
   }
   BLAZE_HD void operator()(Index i) const {
     const Index o = order[i];
     const Index count = min_r(list.count[i], list.capacity);
+    Index from = 0;  // the cursor in i's own previous row
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       const Index was = order[j];
       Real v = 0;
       if (!once) {
-        const long e = find(o, was);
+        const long e = find(o, was, from);
         if (e >= 0) v = in[e];
       } else if (i < j) {  // the owner now; it was the owner before iff o < was
-        const long e = o < was ? find(o, was) : find(was, o);
+        Index elsewhere = 0;
+        const long e = o < was ? find(o, was, from) : find(was, o, elsewhere);
         if (e >= 0) v = o < was ? in[e] : -in[e];
       }
       out[list.offset(k, i)] = v;
