@@ -201,7 +201,7 @@ REPOSE_SIZE ?= $(if $(and $(HAVE_GPU),$(NVCC)),full,small)
 REPOSE_MU_S ?= 0.2 0.4 0.6
 REPOSE_MU_R ?= 0 0.05 0.1
 REPOSE_SETS_full :=
-REPOSE_SETS_small := --set base_radius=10 --set hopper_width=16 --set orifice=7 --set particles=1100 \
+REPOSE_SETS_small := --set base_radius=10 --set hopper_width=16 --set orifice=7 --set particles=1100 --set end_time=2 \
   --set 'material[0].youngs_modulus=1e7' --set 'material[1].youngs_modulus=1e7'
 REPOSE_SETS := $(REPOSE_SETS_$(REPOSE_SIZE))
 REPOSE_LIGGGHTS_CASES ?= 0.2:0.05 0.4:0.05 0.6:0.05

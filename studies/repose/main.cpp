@@ -23,6 +23,23 @@
 // 5e7 Pa (1e7 for the small CPU runs): Zhou et al. (Phys. Rev. E 64 (2001) 021301) found the angle
 // insensitive to Young's modulus, density, Poisson's ratio and damping, sensitive to mu_s, mu_r.
 // The study stops once the funnel is empty and the beads' rms speed is below [study] rest_speed.
+//
+// References (what each says, and how far it was checked here):
+//   Zhou, Xu, Yu & Zulli, Phys. Rev. E 64 (2001) 021301: DEM sandpiles of monosized spheres in a
+//     slot; the angle rises with mu_s and mu_r, falls with particle size and slot thickness, and is
+//     insensitive to E, density, Poisson's ratio and damping (abstract, read).
+//   Zhou, Xu, Yu & Zulli, Powder Technol. 125 (2002) 45: experiments and DEM of coarse glass beads
+//     poured from a hopper into a slot, and a correlation in mu_s, mu_r (their mu_r is a length),
+//     d and the slot (not retrieved here: slot piles are steeper than conical ones, so it is not
+//     used for the 2-degree check).
+//   Zhou et al., Physica A 269 (1999) 536: without rolling friction spheres form no stable pile.
+//   Ai, Chen, Rotter & Ooi, Powder Technol. 206 (2011) 269: rolling models A-D, model C for piles.
+//   Train (1958), glass spheres by four methods incl. the fixed-base cone (method as cited by the
+//     powder-metallurgy handbook; its numbers not retrieved here).
+//   Measured heaps of dry glass beads: 22-26 deg (the range the acceptance item gives; the figure
+//     shows it as a band). Which (mu_s, mu_r) stands for glass beads is itself a calibration:
+//     mu_s ~ 0.3-0.4 glass on glass, mu_r ~ 0.01-0.1 for near-spheres (Wensrich & Katterfeld,
+//     Powder Technol. 217 (2012) 409, read mu_r as a shape parameter).
 // Writes <output directory>/{profile.csv, manifest.txt, pile.vtu, walls.vtu} and a row of
 // data/repose/angles.csv (both codes' angles side by side; --measure fills the LIGGGHTS columns).
 #include <chrono>
