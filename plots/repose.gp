@@ -11,12 +11,12 @@ set ylabel 'angle of repose (deg)'
 set xrange [-0.01:0.11]
 set yrange [0:45]
 set grid
-set key top left font ',9'
+set key top right font ',9'
 set object 1 rect from graph 0, first 22 to graph 1, first 26 fc rgb '#e0e0e0' fs solid 0.6 noborder behind
-set label 1 'glass beads, measured heaps: 22-26 deg' at graph 0.55, first 24 font ',9'
+set label 1 'glass beads, measured heaps: 22-26 deg' at graph 0.02, first 24 font ',9'
 near(x, y) = abs(x - y) < 1e-6
 mus = '0.2 0.4 0.6'
-plot for [k = 1:3] f skip 1 using 3:(near($2, word(mus, k) + 0) ? $4 : 1/0) with linespoints lw 2 pt 7 lc k \
+plot for [k = 1:3] f skip 1 using 3:(near($2, word(mus, k) + 0) ? $4 : 1/0) smooth unique with linespoints lw 2 pt 7 lc k \
        title 'Blaze {/Symbol m}_s = '.word(mus, k), \
      for [k = 1:3] f skip 1 using 3:(near($2, word(mus, k) + 0) ? $9 : 1/0) with points pt 6 ps 2 lc k \
        title 'LIGGGHTS {/Symbol m}_s = '.word(mus, k)
