@@ -11,6 +11,7 @@
 #   make stress            the stress suite at full size (10^5 particles x 10^5 steps; GPU if present)
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
 #   make figures           all of them; make verification-readme renders verification/README.md
+#   make fig-repose        angle of repose, mu_s x mu_r (studies/repose; GPU if present); fig-repose-liggghts: LIGGGHTS side
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
@@ -190,6 +191,37 @@ else
 	@echo "perf figures: no GPU here, plotting the committed GPU results in bench/results"
 endif
 	python3 tools/perf_figures.py
+
+# ---- angle of repose (studies/repose): mu_s x mu_r sweep, GPU when present -------------------
+# make fig-repose: the 3 x 3 sweep in Blaze -> data/repose/<case>/, data/repose/angles.csv,
+# plots/fig-repose.png. REPOSE_SIZE=full (default with a GPU: ~18 000 beads on a base of 25 d)
+# or small (default without: ~1 250 beads on 10 d, E = 1e7 Pa). make fig-repose-liggghts: the
+# same piles in LIGGGHTS on the CPU (REPOSE_LIGGGHTS_CASES, mu_s:mu_r), their angles beside Blaze's.
+REPOSE_SIZE ?= $(if $(and $(HAVE_GPU),$(NVCC)),full,small)
+REPOSE_MU_S ?= 0.2 0.4 0.6
+REPOSE_MU_R ?= 0 0.05 0.1
+REPOSE_SETS_full :=
+REPOSE_SETS_small := --set base_radius=10 --set hopper_width=16 --set orifice=7 --set particles=1100 --set end_time=2 \
+  --set 'material[0].youngs_modulus=1e7' --set 'material[1].youngs_modulus=1e7'
+REPOSE_SETS := $(REPOSE_SETS_$(REPOSE_SIZE))
+REPOSE_LIGGGHTS_CASES ?= 0.2:0.05 0.4:0.05 0.6:0.05
+.PHONY: fig-repose fig-repose-liggghts
+fig-repose: deps
+	@echo "fig-repose: backend = $(RUN_BACKEND), size = $(REPOSE_SIZE)"
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_repose
+	@for mus in $(REPOSE_MU_S); do for mur in $(REPOSE_MU_R); do \
+	  $(BUILD)/$(RUN_BACKEND)/study_repose studies/repose/repose.toml $(REPOSE_SETS) \
+	    --set "pair[0].friction=$$mus" --set "pair[1].friction=$$mus" \
+	    --set "pair[0].rolling_friction=$$mur" --set "pair[1].rolling_friction=$$mur" \
+	    --set output.directory=data/repose/mus$${mus}_mur$${mur}; \
+	  rc=$$?; [ $$rc -eq 0 ] || [ $$rc -eq 2 ] || exit $$rc; done; done
+	gnuplot plots/repose.gp
+	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
+fig-repose-liggghts: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/study_repose
+	tools/repose_liggghts.sh --blaze $(BUILD)/cpu/study_repose $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS)
+	gnuplot plots/repose.gp
+	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk

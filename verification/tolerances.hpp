@@ -423,4 +423,14 @@ constexpr double rolling_deceleration = 0.01;
 // scheme's energy wobble at t_c/5000, ~1e-9 of E_0 (measured 0); the total form reached 0.4.
 constexpr double spring_energy_creation = 1e-6;
 
+// --- angle of repose measurement (studies/repose, include/blaze/sim/repose_angle.hpp) ---
+// A synthetic cone sampled densely (the highest of ~200 grains per bin sits within ~1% of a bin
+// of the bin's inner edge): the per-bin maxima follow the cone to that, and the fitted slope
+// through six or more bins errs by far less than a degree; 0.25 deg is 1/8 of the acceptance's
+// 2 deg, so the measurement adds nothing that matters to the comparison with the literature.
+constexpr double repose_synthetic_cone_deg = 0.25;
+// A cone of touching beads (one bead diameter rms roughness on its surface, the profile's worst
+// case) recovered within 1 deg: the bins' maxima scatter by ~d/2, the fit over 12 bins averages it.
+constexpr double repose_rough_cone_deg = 1.0;
+
 }  // namespace blaze::tol

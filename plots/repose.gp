@@ -1,0 +1,22 @@
+# Angle of repose of glass beads against the rolling friction mu_r, one line per sliding friction
+# mu_s (make fig-repose; studies/repose/main.cpp): Blaze (filled) and LIGGGHTS (open) on the same
+# poured pile, from data/repose/angles.csv; the band is the measured range for glass-bead heaps.
+set terminal pngcairo size 900,650 font ',11'
+set output 'plots/fig-repose.png'
+set datafile separator ','
+f = 'data/repose/angles.csv'
+set title 'Angle of repose of 3 mm glass beads: fixed-base pile (Hertz-Mindlin + rolling model C)'
+set xlabel 'rolling friction {/Symbol m}_r'
+set ylabel 'angle of repose (deg)'
+set xrange [-0.01:0.11]
+set yrange [0:45]
+set grid
+set key top right font ',9'
+set object 1 rect from graph 0, first 22 to graph 1, first 26 fc rgb '#e0e0e0' fs solid 0.6 noborder behind
+set label 1 'glass beads, measured heaps: 22-26 deg' at graph 0.02, first 24 font ',9'
+near(x, y) = abs(x - y) < 1e-6
+mus = '0.2 0.4 0.6'
+plot for [k = 1:3] f skip 1 using 3:(near($2, word(mus, k) + 0) ? $4 : 1/0) smooth unique with linespoints lw 2 pt 7 lc k \
+       title 'Blaze {/Symbol m}_s = '.word(mus, k), \
+     for [k = 1:3] f skip 1 using 3:(near($2, word(mus, k) + 0) ? $9 : 1/0) with points pt 6 ps 2 lc k \
+       title 'LIGGGHTS {/Symbol m}_s = '.word(mus, k)
