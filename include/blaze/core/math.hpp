@@ -24,6 +24,12 @@ template <class T>
 BLAZE_HD constexpr T max_r(T a, T b) { return a < b ? b : a; }
 template <class T>
 BLAZE_HD constexpr T clamp_r(T x, T lo, T hi) { return min_r(max_r(x, lo), hi); }
+// The Hertzian contact radius a = sqrt(R* delta) (m) of an overlap delta (m, negative taken as 0)
+// and an effective radius R* (m). The one expression every law writes it as: a normal law and a
+// tangential spring that both need it compute it once (the compiler merges the identical pure
+// computations; the Mindlin contact kernel had 10 square roots per contact).
+template <class T>
+BLAZE_HD_INLINE T contact_radius(T delta, T r_eff) { return sqrt_r(r_eff * max_r(delta, T(0))); }
 // Index of the lowest set bit of x != 0 (bit sets of polyhedron features).
 BLAZE_HD inline int lowest_bit(std::uint64_t x) {
 #if defined(__CUDA_ARCH__)

@@ -63,14 +63,16 @@ struct Hertz {
   }
 
   // Elastic part K_n delta^(3/2) (N), for diagnostics.
-  BLAZE_HD Real elastic_force(Real delta, Real r_eff) const { return k_hat * sqrt_r(r_eff) * delta * sqrt_r(delta); }
+  BLAZE_HD Real elastic_force(Real delta, Real r_eff) const { return k_hat * contact_radius(delta, r_eff) * delta; }
 
+  // With a = sqrt(R* delta) (contact_radius): K_n delta^(3/2) = k_hat a delta and
+  // sqrt(m_eff K_n) delta^(1/4) = sqrt(m_eff k_hat a), so a contact takes one square root for the
+  // spring (shared with a Mindlin spring's k_t) and one per dashpot in use.
   BLAZE_HD Real normal_force(Real delta, Real v_n, Real m_eff, Real r_eff) const {
-    const Real k_n = k_hat * sqrt_r(r_eff);
-    const Real sd = sqrt_r(delta);
-    Real damping = kd * sd;
-    if (eta != Real(0)) damping += eta * sqrt_r(m_eff * k_n * sd);
-    const Real f = k_n * delta * sd + damping * v_n;
+    const Real a = contact_radius(delta, r_eff);
+    Real damping = kd != Real(0) ? kd * sqrt_r(delta) : Real(0);
+    if (eta != Real(0)) damping += eta * sqrt_r(m_eff * k_hat * a);
+    const Real f = k_hat * a * delta + damping * v_n;
     return no_tension ? max_r(f, Real(0)) : f;
   }
   // Stored elastic energy (2/5) k_hat sqrt(R*) delta^(5/2) (J), in double whatever Real; 0 at
@@ -81,9 +83,7 @@ struct Hertz {
     return 0.4 * static_cast<double>(k_hat) * sqrt_r(static_cast<double>(r_eff)) * d * d * sqrt_r(d);
   }
   // dF/d(delta) of the spring, 1.5 K_n sqrt(delta) (N/m): a rolling spring's k_n.
-  BLAZE_HD Real tangent_stiffness(Real delta, Real r_eff) const {
-    return Real(1.5) * k_hat * sqrt_r(r_eff * max_r(delta, Real(0)));
-  }
+  BLAZE_HD Real tangent_stiffness(Real delta, Real r_eff) const { return Real(1.5) * k_hat * contact_radius(delta, r_eff); }
   // dF/d(delta) (N/m), for the critical time step.
   Real stiffness(Real delta, Real r_eff) const { return Real(1.5) * k_hat * std::sqrt(r_eff * delta); }
 };

@@ -94,7 +94,7 @@ struct TangentialSpring {
   }
 
   BLAZE_HD Real stiffness(Real delta, Real r_eff) const {
-    return k_hat == Real(0) ? k0 : k0 + k_hat * sqrt_r(r_eff * max_r(delta, Real(0)));
+    return k_hat == Real(0) ? k0 : k0 + k_hat * contact_radius(delta, r_eff);
   }
 
   // c_t (kg/s) at this overlap.
@@ -113,12 +113,19 @@ struct TangentialSpring {
     if (size2 > Real(0)) {
       fe -= dot(fe, in.normal) * in.normal;
       const Real turned2 = norm2(fe);
-      Real scale2 = turned2 > Real(0) ? size2 / turned2 : Real(1);
-      if (k_hat != Real(0) && in.v_n < Real(0)) {  // unloading: k_t(delta) / k_t(delta_prev), squared
-        const Real before = stiffness(in.overlap - in.v_n * in.dt, in.r_eff);
-        scale2 *= (kt * kt) / (before * before);
+      // |F_e|^2 kept, times (k_t(delta) / k_t(delta_prev))^2 when unloading: for Mindlin (k_0 = 0)
+      // that is delta / delta_prev, one division with the turning's and no square root.
+      Real num = size2, den = turned2 > Real(0) ? turned2 : size2;
+      if (k_hat != Real(0) && in.v_n < Real(0)) {
+        const Real prev = in.overlap - in.v_n * in.dt;
+        if (k0 == Real(0)) {
+          num *= in.overlap, den *= prev;
+        } else {
+          const Real before = stiffness(prev, in.r_eff);
+          num *= kt * kt, den *= before * before;
+        }
       }
-      fe *= sqrt_r(scale2);
+      fe *= sqrt_r(num / den);
     }
     fe -= in.v_t * (kt * in.dt);
     const Vec3<Real> damping = in.v_t * (beta * sqrt_r(kt * in.m_eff));  // c_t v_t
