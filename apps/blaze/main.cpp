@@ -13,8 +13,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/exec/device_info.hpp"
+#include "blaze/io/background_writer.hpp"
 #include "blaze/io/checkpoint.hpp"
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
@@ -164,10 +166,13 @@ int run_scene(const Scene& s, const Options& o) {
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
   RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
                    resume_at);
-  ParticleState<Real> last_good = o.restart.empty() ? particles : sim.state();
+  // The last sampled state that passed the guards, shared with the frame being written (no copy).
+  std::shared_ptr<const ParticleState<Real>> last_good =
+      std::make_shared<const ParticleState<Real>>(o.restart.empty() ? particles : sim.state());
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
   int frame = 0;
+  BackgroundWriter frames;  // VTU frames written while the steps go on (after pvd: it goes first)
   if (!o.restart.empty()) {
     log.resume(restart_log);
     frame = static_cast<int>(pvd.resume(resume_at));
@@ -185,14 +190,15 @@ int run_scene(const Scene& s, const Options& o) {
   const std::uint64_t first = sim.steps();
   const std::uint64_t builds_before = sim.neighbour_builds();
   sim.timer().enabled = o.phases;
-  double output_seconds = 0;  // samples, frames and checkpoints (host time, the GPU idle meanwhile)
+  double output_seconds = 0;  // samples, frame downloads and checkpoints (the GPU idle meanwhile)
   const auto loop_start = std::chrono::steady_clock::now();
   // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
   const auto stop = [&](const std::exception& e) {
     progress.update(sim.time(), particle_steps, true);
-    write_particles_vtu(dir + "/last_good.vtu", last_good);
+    frames.wait();
+    write_particles_vtu(dir + "/last_good.vtu", *last_good);
     std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
-                 "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
+                 "lower dt or check the contact parameters\n", e.what(), last_good->size(), dir.c_str());
     return 3;
   };
   // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
@@ -211,20 +217,21 @@ int run_scene(const Scene& s, const Options& o) {
     if (checkpoint_every && k > first && k % checkpoint_every == 0)
       write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save());
     if (write_csv || write_vtu) {
-      const auto st = sim.state();
-      if (write_csv) log.sample(sim, st);  // the guards: a state that trips one is not a good one
+      const auto st = std::make_shared<const ParticleState<Real>>(sim.state());
+      if (write_csv) log.sample(sim, *st);  // the guards: a state that trips one is not a good one
       last_good = st;
-      if (write_vtu) {
-        char name[64];
-        std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
-        write_particles_vtu(dir + "/" + name, st);
-        pvd.add(sim.time(), name);
-        if constexpr (polyhedra) {
-          std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", frame - 1);
-          write_polyhedra_vtu(dir + "/" + name, st, shapes);
-          pvd_faces.add(sim.time(), name);
-        }
-      }
+      if (write_vtu)  // in the background; the .pvd names a frame once it is written
+        frames.start([&, st, f = frame++, t = sim.time()] {
+          char name[64];
+          std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
+          write_particles_vtu(dir + "/" + name, *st);
+          pvd.add(t, name);
+          if constexpr (polyhedra) {
+            std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", f);
+            write_polyhedra_vtu(dir + "/" + name, *st, shapes);
+            pvd_faces.add(t, name);
+          }
+        });
     }
     output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
     if (k >= steps) break;  // (a restart may begin at or past the end)
@@ -238,6 +245,9 @@ int run_scene(const Scene& s, const Options& o) {
   } catch (const EnergyGain& e) {
     return stop(e);
   }
+  const auto drain_start = std::chrono::steady_clock::now();
+  frames.wait();  // the last frame on disk before the run reports
+  output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - drain_start).count();
   progress.update(sim.time(), particle_steps, true);
   std::printf("done: %llu steps, %u particles left, %u removed (left the domain)", static_cast<unsigned long long>(steps),
               static_cast<unsigned>(sim.size()), static_cast<unsigned>(sim.removed_count()));
