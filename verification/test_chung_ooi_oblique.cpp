@@ -405,6 +405,19 @@ std::vector<double> range_of(double from, double to, double step) {
 
 double degrees(double rad) { return rad * 180 / kPi; }
 
+// The figure's reference and rigid-body curves of a spin sweep (theta 2..89 deg; computed only when
+// the figure is written): row(tan theta, impact, blaze column, reference, rigid body).
+template <class Spun, class Row>
+void reference_curves(FigureData& fig, const std::string& title, const Spun& spun, const Row& row) {
+  fig.block(title);
+  if (!fig.enabled()) return;
+  for (double deg : range_of(2, 89, 1)) {
+    const Impact c = spun(deg);
+    const Outcome ref = reference(c), rigid = rigid_body(c);
+    row(std::tan(deg * kPi / 180), c, ref, ref, rigid);
+  }
+}
+
 const Material kAlumina{"alumina (Al2O3)", 3.8e11, 0.23, 4000};
 const Material kAluminium{"aluminium alloy", 7.0e10, 0.33, 2700};
 const Material kSteel{"steel", 2.08e11, 0.30, 7850};
@@ -523,13 +536,7 @@ BOOST_AUTO_TEST_CASE(test6_spin_sphere_plane) {
     check_sweep(name, "spin only, theta 5..87.5 deg; and v_t = 0.2 m/s, R w0 = -1..1 m/s", merged(pure, moving));
     fig.block(std::string("test 6 ") + mat.name + ": blaze, spin only");
     for (const Point& p : pure.points) row(std::tan(p.x * kPi / 180), p.c, p.blaze, p.ref, p.rigid);
-    fig.block(std::string("test 6 ") + mat.name + ": reference and rigid body, spin only");
-    if (fig.enabled())
-      for (double deg : range_of(2, 89, 1)) {
-        const Impact c = spun(deg);
-        const Outcome ref = reference(c), rigid = rigid_body(c);
-        row(std::tan(deg * kPi / 180), c, ref, ref, rigid);
-      }
+    reference_curves(fig, std::string("test 6 ") + mat.name + ": reference and rigid body, spin only", spun, row);
     fig.block(std::string("test 6 ") + mat.name + ": blaze, v_t = 0.2 m/s with top- and backspin");
     for (const Point& p : moving.points) row(slip(p.c.b1, p.c.b2) / v_n, p.c, p.blaze, p.ref, p.rigid);
     fig.block(std::string("test 6 ") + mat.name + ": reference and rigid body, v_t = 0.2 m/s");
@@ -616,13 +623,7 @@ BOOST_AUTO_TEST_CASE(test8_spun_sphere_on_a_larger_sphere) {
                   mirror, tol::chung_ooi_mirror);
     fig.block(std::string("test 8 ") + mat.name + ": blaze");
     for (const Point& p : s.points) row(std::tan(p.x * kPi / 180), p.c, p.blaze, p.ref, p.rigid);
-    fig.block(std::string("test 8 ") + mat.name + ": reference and rigid body");
-    if (fig.enabled())
-      for (double deg : range_of(2, 89, 1)) {
-        const Impact c = spun(deg);
-        const Outcome ref = reference(c), rigid = rigid_body(c);
-        row(std::tan(deg * kPi / 180), c, ref, ref, rigid);
-      }
+    reference_curves(fig, std::string("test 8 ") + mat.name + ": reference and rigid body", spun, row);
   }
 }
 
