@@ -195,7 +195,11 @@ int run_scene(const Scene& s, const Options& o) {
   // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
   const auto stop = [&](const std::exception& e) {
     progress.update(sim.time(), particle_steps, true);
-    frames.wait();
+    try {
+      frames.wait();
+    } catch (const std::exception& w) {  // the guard's report and last_good.vtu come first
+      std::fprintf(stderr, "blaze: a frame could not be written: %s\n", w.what());
+    }
     write_particles_vtu(dir + "/last_good.vtu", *last_good);
     std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
                  "lower dt or check the contact parameters\n", e.what(), last_good->size(), dir.c_str());
