@@ -9,8 +9,10 @@
 #     --steps S       timed steps [600]
 #     --warmup W      untimed settling steps before them [15 x side]
 #     --cores C       LIGGGHTS MPI ranks = Blaze OpenMP threads [2]
+#     --law L         linear (spring-dashpot, history-free friction) or hertz-history (Hertz with
+#                     the Mindlin tangential spring: LIGGGHTS hertz/history) [linear]
 #     --blaze PATH    the Blaze binary [build/cpu/blaze]
-#     --record        append a row to bench/results/compare-cpu.csv
+#     --record        append a row to bench/results/compare-cpu.csv (compare-cpu-LAW.csv for other laws)
 #     --keep          keep the generated inputs and logs (their folder is printed)
 #
 # Both codes start from the same touching bcc block, settle for W untimed steps and are timed
@@ -30,6 +32,7 @@ steps=600         # timed steps
 warmup=auto       # untimed settling steps; auto = 15 x side (the load reaches the top layer at ~12 x side)
 cores=2           # LIGGGHTS MPI ranks = Blaze OpenMP threads
 blaze=build/cpu/blaze
+law=linear
 record=0
 keep=0
 
@@ -55,6 +58,8 @@ while [[ $# -gt 0 ]]; do
     --steps) positive --steps "${2-}" 1; steps=$2; shift 2 ;;
     --warmup) positive --warmup "${2-}" 0; warmup=$2; shift 2 ;;
     --cores) positive --cores "${2-}" 1; cores=$2; shift 2 ;;
+    --law) [[ ${2-} == linear || ${2-} == hertz-history ]] || { echo "bench_compare: --law must be linear or hertz-history, got '${2-}'" >&2; exit 2; }
+      law=$2; shift 2 ;;
     --blaze) [[ -n ${2-} ]] || { echo "bench_compare: --blaze needs a path" >&2; exit 2; }; blaze=$2; shift 2 ;;
     --record) record=1; shift ;;
     --keep) keep=1; shift ;;
@@ -87,6 +92,8 @@ fi
 
 # ---- the scene: every number both inputs get ---------------------------------------------------
 radius=1e-3 density=2500 stiffness=1e4 restitution=0.5 friction=0.4 kt=0.05 skin_over_r=0.2
+# hertz-history: a soft glass (Rayleigh time 2.7e-5 s: the linear scene's dt is 0.1 of it)
+young=1e8 poisson=0.3
 # awk prints %.17g, so both codes parse the same doubles.
 eval "$(awk -v r=$radius -v rho=$density -v k=$stiffness -v e=$restitution -v n=$side -v skin=$skin_over_r \
             -v warm=$warmup -v steps=$steps 'BEGIN {
@@ -105,7 +112,7 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/bench-compare.XXXXXX")
 if [[ $keep -eq 1 ]]; then echo "bench_compare: inputs and logs kept in $tmp"; else trap 'rm -rf "$tmp"' EXIT; fi
 
 subst=(-e "s|@RADIUS@|$radius|g" -e "s|@DIAMETER@|$diameter|g" -e "s|@DENSITY@|$density|g"
-       -e "s|@K@|$stiffness|g" -e "s|@E@|$restitution|g" -e "s|@MU@|$friction|g" -e "s|@KT@|$kt|g"
+       -e "s|@YOUNG@|$young|g" -e "s|@POISSON@|$poisson|g" -e "s|@K@|$stiffness|g" -e "s|@E@|$restitution|g" -e "s|@MU@|$friction|g" -e "s|@KT@|$kt|g"
        -e "s|@CN_PP@|$cn_pp|g" -e "s|@CN_PW@|$cn_pw|g" -e "s|@DT@|$dt|g"
        -e "s|@SKIN_OVER_R@|$skin_over_r|g" -e "s|@SKIN@|$skin|g"
        -e "s|@LO@|$lo|g" -e "s|@HI_X@|$hi_x|g" -e "s|@HI_Y@|$hi_y|g" -e "s|@W0@|$w0|g" -e "s|@W1@|$w1|g"
@@ -113,12 +120,13 @@ subst=(-e "s|@RADIUS@|$radius|g" -e "s|@DIAMETER@|$diameter|g" -e "s|@DENSITY@|$
        -e "s|@SIDE_B@|$((side - 1))|g" -e "s|@SIDE_HI@|$side_hi|g"
        -e "s|@WARMUP@|$warmup|g" -e "s|@STEPS@|$steps|g" -e "s|@THERMO@|5000|g"
        -e "s|@END_TIME@|$t_warm|g" -e "s|@CHECKPOINT@|$t_warm|g" -e "s|@DIR@|$tmp/blaze|g")
-sed "${subst[@]}" bench/compare/packing.liggghts.in >"$tmp/packing.liggghts"
-sed "${subst[@]}" bench/compare/packing.toml.in >"$tmp/packing.toml"
+template=packing; [[ $law == hertz-history ]] && template=packing-hertz
+sed "${subst[@]}" "bench/compare/$template.liggghts.in" >"$tmp/packing.liggghts"
+sed "${subst[@]}" "bench/compare/$template.toml.in" >"$tmp/packing.toml"
 ! grep -n '@[A-Z_]*@' "$tmp/packing.liggghts" "$tmp/packing.toml" || fail "a placeholder above has no value"
 
 cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null || true)
-echo "bench_compare: $particles spheres (bcc, side $side), $warmup warm-up + $steps timed steps, dt = $dt s," \
+echo "bench_compare: $law law, $particles spheres (bcc, side $side), $warmup warm-up + $steps timed steps, dt = $dt s," \
      "$cores cores of ${cpu:-an unknown CPU}"
 # Cores kept busy by other work over one second (from /proc/stat), before anything runs.
 cpu_ticks() { awk '/^cpu / { print $2 + $3 + $4 + $7 + $8 + $9, $2 + $3 + $4 + $5 + $6 + $7 + $8 + $9 }' /proc/stat; }
@@ -192,7 +200,7 @@ printf '%-10s %10s %8s %12s %24s  %s\n' LIGGGHTS "$l_atoms" "$l_steps" "$l_time"
 printf '\nBlaze / LIGGGHTS = %s\n' "$ratio"
 
 if [[ $record -eq 1 ]]; then
-  csv=bench/results/compare-cpu.csv
+  csv=bench/results/compare-cpu.csv; [[ $law == linear ]] || csv=bench/results/compare-cpu-$law.csv
   commit=$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)
   git diff --quiet HEAD 2>/dev/null || commit="$commit+dirty"
   [[ -f $csv ]] || echo "date,commit,cpu,cores,N,steps,warmup,dt_s,blaze_particle_steps_per_s,liggghts_particle_steps_per_s,ratio,blaze_timing,liggghts_procs,busy_cores_before" >"$csv"

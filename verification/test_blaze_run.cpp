@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
+#include <string>
 #include "verification/run_program.hpp"
 
 namespace fs = std::filesystem;
@@ -82,6 +83,26 @@ BOOST_AUTO_TEST_CASE(restart_rewrites_the_same_time_series) {
   BOOST_TEST(other.output.find("key 'dt'") != std::string::npos, other.output);
   fs::remove_all(a);
   fs::remove_all(b);
+}
+
+// An output interval of the run's whole length comes at its end, once: a checkpoint_interval equal
+// to end_time writes the checkpoint that make bench-compare restarts from (an interval rounding to
+// the run's step count was taken for "never" from stop 22 to 24), and one just past it writes none.
+BOOST_AUTO_TEST_CASE(interval_of_the_run_length_comes_at_its_end) {
+  for (const char* end_time : {"0.002", "0.0021", "0.0034"}) {  // dt = 3.4e-5 s x 40 steps per contact
+    const fs::path dir = fs::temp_directory_path() / "blaze_run_interval";
+    fs::remove_all(dir);
+    const std::string set = std::string(" --set end_time=") + end_time + " --set output.checkpoint_interval=" + end_time;
+    const Result r = run("run data/scenes/box_fill.toml --quiet --set output.directory=" + dir.string() + set);
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    BOOST_TEST(fs::exists(dir / "checkpoint.blz"), "end_time = checkpoint_interval = " << end_time);
+    fs::remove_all(dir);
+    const Result past = run("run data/scenes/box_fill.toml --quiet --set output.directory=" + dir.string() + set +
+                            " --set end_time=" + std::to_string(0.5 * std::stod(end_time)));
+    BOOST_TEST_REQUIRE(past.status == 0, past.output);
+    BOOST_TEST(!fs::exists(dir / "checkpoint.blz"), "checkpoint_interval twice end_time: none written");
+    fs::remove_all(dir);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

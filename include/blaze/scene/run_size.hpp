@@ -109,11 +109,12 @@ inline RunSize run_size(const Scene& s, bool gpu) {
 }
 
 // Steps between two outputs of `interval` s (0: none), without overflow for any interval: an
-// interval beyond the run's end never comes round (steps + 1).
+// interval beyond the run's end never comes round (steps + 1); one of the run's length comes at
+// its end (a checkpoint with interval = end_time is written: make bench-compare restarts from it).
 inline std::uint64_t interval_steps(double interval, double dt, std::uint64_t steps) {
   if (!(interval > 0)) return 0;
   const double k = std::round(interval / dt);
-  if (!(k < static_cast<double>(steps))) return steps + 1;
+  if (!(k <= static_cast<double>(steps))) return steps + 1;
   return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(k));
 }
 
