@@ -100,7 +100,9 @@ int main(int argc, char** argv) {
   blaze::line_buffered_output();
   std::string out_dir = "bench/results";
   long max_n = 0, min_n = 0;
+  // polydisperse: by default on the GPU only (settling its bed takes minutes on 2 CPU cores)
   std::string cases = "spheres,history,polyhedra,packed,surfaces,skip,mill", tag_suffix;
+  bool cases_given = false;
   long largest_spheres = 500000000, largest_cubes = 100000000;
   for (int a = 1; a + 1 < argc; ++a) {
     const std::string opt = argv[a];
@@ -119,7 +121,7 @@ int main(int argc, char** argv) {
     if (opt == "--skin") g_skin_fraction = std::stod(argv[a + 1]);
     if (opt == "--max-n") max_n = std::stol(argv[a + 1]);
     if (opt == "--min-n") min_n = std::stol(argv[a + 1]);
-    if (opt == "--cases") cases = argv[a + 1];
+    if (opt == "--cases") cases = argv[a + 1], cases_given = true;
   }
   const auto wanted = [&](const char* name) { return ("," + cases + ",").find("," + std::string(name) + ",") != std::string::npos; };
   const bool gpu = std::string(DefaultSpace::name) == "gpu";
@@ -159,6 +161,10 @@ int main(int argc, char** argv) {
     if (wanted("history")) {  // issue 18: Hertz-Mindlin with the contact store, and with rolling resistance
       rows.push_back(sphere_case<ContactLaw<float, Hertz, TangentialSpring>>("hertz-mindlin", n, warmup, steps));
       rows.push_back(sphere_case<ContactLaw<float, Hertz, TangentialSpring, RollingResistance>>("mindlin-epsd", n, warmup, steps));
+    }
+    if (wanted("polydisperse") || (gpu && !cases_given)) {  // issue 18: a settled random bed, not only the lattice
+      rows.push_back(settled_polydisperse_case<ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>>("linear", n, warmup, steps));
+      rows.push_back(settled_polydisperse_case<ContactLaw<float, Hertz, TangentialSpring>>("hertz-mindlin", n, warmup, steps));
     }
     // Polyhedra: fewer steps from 1e6 (GPU) / 1e4 (CPU) up, so that each case takes seconds.
     const long poly_steps = std::clamp((gpu ? 400000000L : 2000000L) / n, 10L, 400L);
