@@ -163,8 +163,9 @@ int main(int argc, char** argv) {
       rows.push_back(sphere_case<ContactLaw<float, Hertz, TangentialSpring, RollingResistance>>("mindlin-epsd", n, warmup, steps));
     }
     if (wanted("polydisperse") || (gpu && !cases_given)) {  // issue 18: a settled random bed, not only the lattice
-      rows.push_back(settled_polydisperse_case<ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>>("linear", n, warmup, steps));
-      rows.push_back(settled_polydisperse_case<ContactLaw<float, Hertz, TangentialSpring>>("hertz-mindlin", n, warmup, steps));
+      const auto bed = settled_polydisperse_bed<float>(n);
+      rows.push_back(settled_polydisperse_case<ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>>("linear", bed, warmup, steps));
+      rows.push_back(settled_polydisperse_case<ContactLaw<float, Hertz, TangentialSpring>>("hertz-mindlin", bed, warmup, steps));
     }
     // Polyhedra: fewer steps from 1e6 (GPU) / 1e4 (CPU) up, so that each case takes seconds.
     const long poly_steps = std::clamp((gpu ? 400000000L : 2000000L) / n, 10L, 400L);

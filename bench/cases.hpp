@@ -156,13 +156,12 @@ Row sphere_case(const char* law_name, long n, long warmup, long steps) {
 // A gravity-settled random polydisperse bed (issue 18: the lattice's rate must hold off the
 // lattice): radii uniform in r (1 +- 0.2) (ratio 1.5), poured from a loose cubic lattice with
 // random velocities into a box of five walls and settled with the history-free linear law for
-// twice the top layer's fall time plus 0.05 s; then the law under test runs on it as on the
-// lattice bed. Settling is the dear part, so a block of n / t^2 spheres (t = 10 from 1e6, 2 from
-// 4e3, else 1) is settled once and laid t x t times side by side in x and z inside one box (the
-// seams, where two settled wall layers face each other, are looser than the bulk).
-template <class Law>
-Row settled_polydisperse_case(const char* law_name, long n, long warmup, long steps) {
-  using Real = typename Law::real_type;
+// twice the top layer's fall time plus 0.05 s. Settling is the dear part, so a block of n / t^2
+// spheres (t = 10 from 1e6, 2 from 4e3, else 1) is settled once and laid t x t times side by side
+// in x and z inside one box (the seams, where two settled wall layers face each other, are looser
+// than the bulk); the bed is built once and every law runs on it (settled_polydisperse_case).
+template <class Real>
+Packing<Real> settled_polydisperse_bed(long n) {
   using LinF = ContactLaw<Real, LinearSpringDashpot, HistoryFreeFriction>;
   using V = Vec3<double>;
   const int t = n >= 1000000 ? 10 : n >= 4000 ? 2 : 1;
@@ -171,46 +170,47 @@ Row settled_polydisperse_case(const char* law_name, long n, long warmup, long st
   const double dt = kPi * std::sqrt(0.5 * m_min / kStiffness) / 25;
   auto scene = gravity_packing<Real>(static_cast<int>(block), kRadius, 7, dt, {Lattice::cubic, 2.5, spread, 0.1, false});
   scene.params.skin = static_cast<Real>(g_skin_fraction * kRadius * (1 + spread));
-  PairTable<LinF> settle_laws;
-  settle_laws.set(0, 0, make_law<LinF>());
-  settle_laws.set(0, 1, make_law<LinF>());
+  PairTable<LinF> laws;
+  laws.set(0, 0, make_law<LinF>());
+  laws.set(0, 1, make_law<LinF>());
   double top = 0;
   for (const auto& x : scene.particles.position) top = std::max(top, static_cast<double>(x.y));
   const auto settle_steps = static_cast<std::uint64_t>((2 * std::sqrt(2 * top / 9.81) + 0.05) / dt);
-  Simulation<DefaultSpace, SphereShape, LinF, VelocityVerlet> settle(scene.params, settle_laws, scene.world, scene.particles);
+  Simulation<DefaultSpace, SphereShape, LinF, VelocityVerlet> settle(scene.params, laws, scene.world, scene.particles);
   settle.run(settle_steps);
   const ParticleState<Real> settled = settle.state();
-  // t x t copies, the block's inner width apart; one box around them all.
+  // t x t copies, the block's inner width apart (polygon 2 is the block's +x side); one box around them all.
   const double half = static_cast<double>(scene.world.polygons[2].vertex[0].x), width = 2 * half;
   double height = 0;
   for (const auto& x : settled.position) height = std::max(height, static_cast<double>(x.y));
-  ParticleState<Real> bed;
-  bed.reserve(settled.size() * static_cast<std::size_t>(t * t));
+  Packing<Real> bed;
+  bed.particles.reserve(settled.size() * static_cast<std::size_t>(t * t));
   for (int a = 0; a < t; ++a)
     for (int b = 0; b < t; ++b)
       for (std::size_t k = 0; k < settled.size(); ++k)
-        bed.add_sphere(settled.position[k] + vec_cast<Real>(V{a * width, 0, b * width}), settled.radius[k], Real(kDensity), 0,
-                       settled.velocity[k]);
+        bed.particles.add_sphere(settled.position[k] + vec_cast<Real>(V{a * width, 0, b * width}), settled.radius[k],
+                                 Real(kDensity), 0, settled.velocity[k]);
   const double lo = -half, hi = -half + t * width, h = height + 4 * kRadius;
-  World<Real> world;
-  world.polygons = {PlanarPolygon<Real>::make({V{lo, 0, hi}, {hi, 0, hi}, {hi, 0, lo}, {lo, 0, lo}}, 1),
-                    PlanarPolygon<Real>::make({V{lo, 0, lo}, {lo, h, lo}, {lo, h, hi}, {lo, 0, hi}}, 1),
-                    PlanarPolygon<Real>::make({V{hi, 0, hi}, {hi, h, hi}, {hi, h, lo}, {hi, 0, lo}}, 1),
-                    PlanarPolygon<Real>::make({V{hi, 0, lo}, {hi, h, lo}, {lo, h, lo}, {lo, 0, lo}}, 1),
-                    PlanarPolygon<Real>::make({V{lo, 0, hi}, {lo, h, hi}, {hi, h, hi}, {hi, 0, hi}}, 1)};
-  SimulationParams<Real> params = scene.params;
-  params.domain_lo = vec_cast<Real>(V{lo - 4 * kRadius, -4 * kRadius, lo - 4 * kRadius});
-  params.domain_hi = vec_cast<Real>(V{hi + 4 * kRadius, h + 4 * kRadius, hi + 4 * kRadius});
-  params.pairs = pairs_for(false);
+  bed.world.polygons = open_box<Real>(lo, hi, lo, hi, h);
+  bed.params = scene.params;
+  bed.params.domain_lo = vec_cast<Real>(V{lo - 4 * kRadius, -4 * kRadius, lo - 4 * kRadius});
+  bed.params.domain_hi = vec_cast<Real>(V{hi + 4 * kRadius, h + 4 * kRadius, hi + 4 * kRadius});
+  bed.params.pairs = pairs_for(false);
+  std::printf("  settled polydisperse bed: %d x %d blocks of %ld, settled for %llu steps (%d left then)\n", t, t, block,
+              static_cast<unsigned long long>(settle_steps), static_cast<int>(settle.removed_count()));
+  return bed;
+}
+
+template <class Law>
+Row settled_polydisperse_case(const char* law_name, const Packing<typename Law::real_type>& bed, long warmup, long steps) {
+  using Real = typename Law::real_type;
   PairTable<Law> laws;
   laws.set(0, 0, make_law<Law>());
   laws.set(0, 1, make_law<Law>());
-  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(params, laws, world, bed);
-  bed = {};
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(bed.params, laws, bed.world,
+                                                                                               bed.particles);
   Row row = measure(sim, "sphere", law_name, sizeof(Real) == 4 ? "float" : "double", "settled-poly", 5, warmup, steps);
   if (sim.removed_count() != 0) std::printf("WARNING: %d spheres left the settled bed\n", static_cast<int>(sim.removed_count()));
-  std::printf("  settled polydisperse bed: %d x %d blocks of %ld, settled for %llu steps (%d left then)\n", t, t, block,
-              static_cast<unsigned long long>(settle_steps), static_cast<int>(settle.removed_count()));
   return row;
 }
 

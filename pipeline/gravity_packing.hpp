@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 #include "blaze/particles/particle_state.hpp"
 #include "pipeline/simulation.hpp"
 #include "blaze/world/world.hpp"
@@ -43,6 +44,18 @@ struct LatticeCell {
 };
 inline LatticeCell lattice_cell(int c, int side) { return {c % side, c / (side * side), (c / side) % side}; }
 
+// Floor y = 0 and four sides up to height h over [x0, x1] x [z0, z1] (m), normals inwards, of
+// world material 1.
+template <class Real>
+std::vector<PlanarPolygon<Real>> open_box(double x0, double x1, double z0, double z1, double h) {
+  using V = Vec3<double>;
+  return {PlanarPolygon<Real>::make({V{x0, 0, z1}, {x1, 0, z1}, {x1, 0, z0}, {x0, 0, z0}}, 1),
+          PlanarPolygon<Real>::make({V{x0, 0, z0}, {x0, h, z0}, {x0, h, z1}, {x0, 0, z1}}, 1),
+          PlanarPolygon<Real>::make({V{x1, 0, z1}, {x1, h, z1}, {x1, h, z0}, {x1, 0, z0}}, 1),
+          PlanarPolygon<Real>::make({V{x1, 0, z0}, {x1, h, z0}, {x0, h, z0}, {x0, 0, z0}}, 1),
+          PlanarPolygon<Real>::make({V{x0, 0, z1}, {x0, h, z1}, {x1, h, z1}, {x1, 0, z1}}, 1)};
+}
+
 // Loose bed (defaults): a cubic lattice with gaps that collapses under gravity and collisions.
 // Dense bed (fcc, pitch < 2, lid): 12 neighbours each, all compressed against their neighbours and
 // the six walls, so the bed stays in contact: the benchmark state.
@@ -75,12 +88,7 @@ Packing<Real> gravity_packing(int n, double radius, unsigned seed, double dt, co
   }
   const double h = o.lid ? top + wall_gap : top + 4 * pitch;
   using V = Vec3<double>;
-  p.world.polygons = {
-      PlanarPolygon<Real>::make({{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}}, 1),
-      PlanarPolygon<Real>::make({V{-half, 0, -half}, {-half, h, -half}, {-half, h, half}, {-half, 0, half}}, 1),
-      PlanarPolygon<Real>::make({V{half, 0, half}, {half, h, half}, {half, h, -half}, {half, 0, -half}}, 1),
-      PlanarPolygon<Real>::make({V{half, 0, -half}, {half, h, -half}, {-half, h, -half}, {-half, 0, -half}}, 1),
-      PlanarPolygon<Real>::make({V{-half, 0, half}, {-half, h, half}, {half, h, half}, {half, 0, half}}, 1)};
+  p.world.polygons = open_box<Real>(-half, half, -half, half, h);
   if (o.lid)
     p.world.polygons.push_back(PlanarPolygon<Real>::make({V{-half, h, -half}, {half, h, -half}, {half, h, half}, {-half, h, half}}, 1));
   p.params = {static_cast<Real>(dt), Vec3<Real>{0, Real(-9.81), 0},
