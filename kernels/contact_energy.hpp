@@ -9,8 +9,9 @@
 //          collide_world(i, w))                                                          [J]
 //   wall_contacts  the number of those world objects i touches (polygons and cylinders alike).
 // The energies are formed in double (the law's stored_energy returns double) and written per
-// particle; the host sums them in index order, so the total is deterministic and the same on
-// every backend up to the geometry's rounding (no atomics, no reduction order to vary).
+// particle; reduce_in_order (exec/primitives.hpp, through kernels/sample_tally.hpp) adds them in
+// a fixed order per backend, so the total is deterministic (no atomics) and the backends agree up
+// to the geometry's rounding and their two summation orders.
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "blaze/laws/contact_law.hpp"

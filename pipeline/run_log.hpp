@@ -82,20 +82,16 @@ class RunLog {
     return buf;
   }
 
-  // One row: the state `st` at time t, the simulation's counters since the last sample.
+  // One row: the simulation now, reduced where its particles live (Simulation::sample()), and
+  // the counters since the last sample.
   template <class Sim>
-  void sample(Sim& sim, const ParticleState<Real>& st) {
-    Energies e;
-    for (std::size_t k = 0; k < st.size(); ++k) {
-      const Energies p = particle_energies(st, k, gravity_);
-      e.translational += p.translational, e.rotational += p.rotational, e.potential += p.potential;
-    }
-    const ContactEnergy stored = sim.contact_energy();
+  void sample(Sim& sim) {
+    const auto smp = sim.sample(limit_);
+    const Energies& e = smp.energies;
+    const ContactEnergy& stored = smp.stored;
     const double total = e.total() + stored.total();
     if (!started_) {  // the scale: initial kinetic + elastic energy + sum m |g| h
-      double exchange = 0;
-      for (std::size_t k = 0; k < st.size(); ++k)
-        exchange += static_cast<double>(st.mass[k]) * static_cast<double>(norm(gravity_)) * height_;
+      const double exchange = smp.mass * static_cast<double>(norm(gravity_)) * height_;
       e0_ = total, scale_ = e.translational + e.rotational + stored.total() + exchange, started_ = true;
     }
     const double removed_energy = sim.removed_energy();
@@ -110,9 +106,9 @@ class RunLog {
     }
     max_gain_ = std::max(max_gain_, gain / scale_);
 
-    const auto [vf, ee] = sim.contact_counts();
-    const PenetrationReport pen = sim.take_penetration(limit_);
-    out_ << sim.time() << ',' << st.size() << ',' << sim.removed_count() << ',' << e.translational << ','
+    const long vf = smp.vertex_face, ee = smp.edge_edge;
+    const PenetrationReport& pen = smp.penetration;
+    out_ << sim.time() << ',' << sim.size() << ',' << sim.removed_count() << ',' << e.translational << ','
          << e.rotational << ',' << e.potential << ',' << stored.total() << ',' << total << ','
          << e0_ - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
          << ',' << pen.over << ',' << pen.worst_id << '\n';

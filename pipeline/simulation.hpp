@@ -19,6 +19,7 @@
 #include "blaze/sim/snapshot.hpp"
 #include "blaze/world/world.hpp"
 #include "kernels/contact_energy.hpp"
+#include "kernels/sample_tally.hpp"
 #include "kernels/contact_forces.hpp"
 #include "kernels/pair_forces.hpp"
 #include "kernels/integrate.hpp"
@@ -181,55 +182,57 @@ class Simulation {
   // round trip per step (the rebuild check), a small share of their step.
   bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
 
-  ParticleState<Real> state() const {
-    ParticleState<Real> s = store_.download();
-    const auto inv_i = store_.download_inverse_inertia();
-    for (std::size_t k = 0; k < s.size(); ++k) s.inertia[k] = shape_.principal_inertia(inv_i[k], s.type[k]);
-    return s;
-  }
+  ParticleState<Real> state() const { return state_of(store_); }
 
   // Contacts counted in the last force evaluation, by kind (each pair once); needs
   // Features::statistics.
-  std::pair<long, long> contact_counts() const {
+  std::pair<long, long> contact_counts() {
     static_assert(Features::statistics, "contact counts need FeatureSet<..., true>");
-    long vf = 0, ee = 0;
     if (stats_vertex_face_.size() < static_cast<std::size_t>(store_.size())) return {0, 0};  // no evaluation yet
-    for (Index c : to_host(stats_vertex_face_, store_.size())) vf += c;
-    for (Index c : to_host(stats_edge_edge_, store_.size())) ee += c;
-    return {vf / 2, ee / 2};
+    const SampleTally t = tally(false, 0);
+    return {static_cast<long>(t.vertex_face / 2), static_cast<long>(t.edge_edge / 2)};
   }
   // Elastic energy stored in the contacts at the current positions, over the same neighbour list
   // and with the same collide() calls as the force kernels, and the particle-world contact
-  // count. A diagnostic for the time series: one kernel and three per-particle downloads, run
-  // only when asked (never inside a step). Needs every law to have stored_energy().
-  ContactEnergy contact_energy() {
-    const Index n = store_.size();
-    for (auto* b : {&energy_pairs_, &energy_walls_})
-      b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
-    energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
-    const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
-    for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), world_.view(), laws_, slots,
-                                                         contacts_.pairs(), contacts_.walls()});
-    ContactEnergy e;
-    for (double x : to_host(energy_pairs_, n)) e.pairs += x;  // index order: deterministic
-    for (double x : to_host(energy_walls_, n)) e.walls += x;
-    for (Index c : to_host(energy_wall_contacts_, n)) e.wall_contacts += c;
-    return e;
-  }
+  // count. A diagnostic for the time series: one kernel and one reduction, run only when asked
+  // (never inside a step). Needs every law to have stored_energy().
+  ContactEnergy contact_energy() { return stored_energy(tally(true, 0)); }
   // Deepest overlap / radius per particle since the last call, then reset (Features::monitor).
   PenetrationReport take_penetration(double threshold) {
     static_assert(Features::monitor, "penetration needs FeatureSet<..., ..., true>");
-    const auto pen = store_.download_penetration();
-    const auto id = store_.download_id();
-    PenetrationReport r;
-    for (std::size_t k = 0; k < pen.size(); ++k) {
-      const double d = static_cast<double>(pen[k]);
-      if (d > threshold) ++r.over;
-      if (d > r.worst) r.worst = d, r.worst_id = id[k];
-    }
+    const PenetrationReport r = penetration(tally(false, threshold));
     store_.reset_penetration();
     return r;
   }
+  // One row of the time series, reduced on the particles' own memory space (kernels/
+  // sample_tally.hpp): energies, mass, stored contact energy, contact counts (statistics) and the
+  // penetration since the last sample (monitor; reset here). A kernel for the contacts' energy, one
+  // for the reduction, and 16384 partial tallies back at most: no state download.
+  struct Sample {
+    Energies energies;      // J, translational, rotational, potential
+    double mass = 0;        // kg, of the particles present
+    ContactEnergy stored;   // J, the open contacts' elastic energy; world contacts
+    long vertex_face = 0, edge_edge = 0;  // particle-particle contacts by kind, each pair once
+    PenetrationReport penetration;
+  };
+  Sample sample(double penetration_limit) {
+    const SampleTally t = tally(true, penetration_limit);
+    Sample s;
+    s.energies = {t.translational, t.rotational, t.potential};
+    s.mass = t.mass;
+    s.stored = stored_energy(t);
+    if (stats_vertex_face_.size() >= static_cast<std::size_t>(store_.size()))
+      s.vertex_face = static_cast<long>(t.vertex_face / 2), s.edge_edge = static_cast<long>(t.edge_edge / 2);
+    s.penetration = penetration(t);
+    store_.reset_penetration();
+    return s;
+  }
+  // A copy of the state kept on the particles' memory space (keep_state()) and read back only
+  // when asked (kept_state()): what `blaze run` writes as last_good.vtu when a guard stops it,
+  // without a download at every sample. Costs the state's arrays once more (~16 reals and
+  // 6 bytes per particle).
+  void keep_state() { kept_.copy_state_from(store_); }
+  ParticleState<Real> kept_state() const { return state_of(kept_); }
   const Shape& shape() const { return shape_; }
   std::vector<Vec3<Real>> forces() const { return store_.download_force(); }
   std::vector<Vec3<Real>> torques() const { return store_.download_torque(); }
@@ -444,6 +447,38 @@ class Simulation {
       }
   }
 
+  ParticleState<Real> state_of(const ParticleStore<Real, Space>& store) const {
+    ParticleState<Real> s = store.download();
+    const auto inv_i = store.download_inverse_inertia();
+    for (std::size_t k = 0; k < s.size(); ++k) s.inertia[k] = shape_.principal_inertia(inv_i[k], s.type[k]);
+    return s;
+  }
+  // The sample's reduction; with_energy runs StoredContactEnergy first (its per-particle slots).
+  SampleTally tally(bool with_energy, double threshold) {
+    const Index n = store_.size();
+    ParticleTally<Shape, Real> f{shape_, store_.view(), params_.gravity, nullptr, nullptr, nullptr, nullptr, nullptr, threshold};
+    if (with_energy) {
+      for (auto* b : {&energy_pairs_, &energy_walls_})
+        b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
+      energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
+      const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
+      for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), world_.view(), laws_,
+                                                           slots, contacts_.pairs(), contacts_.walls()});
+      f.pair_energy = energy_pairs_.data(), f.wall_energy = energy_walls_.data(), f.wall_contacts = energy_wall_contacts_.data();
+    }
+    if constexpr (Features::statistics)
+      if (stats_vertex_face_.size() >= static_cast<std::size_t>(n))
+        f.vertex_face = stats_vertex_face_.data(), f.edge_edge = stats_edge_edge_.data();
+    return reduce_in_order(Space{}, n, f, tally_parts_);
+  }
+  static ContactEnergy stored_energy(const SampleTally& t) { return {t.pair_energy, t.wall_energy, static_cast<long>(t.wall_contacts)}; }
+  PenetrationReport penetration(const SampleTally& t) {
+    PenetrationReport r;
+    r.worst = t.worst, r.over = static_cast<long>(t.over);
+    if (t.worst_index >= 0) r.worst_id = read_one(store_.view().id + t.worst_index, Space{});
+    return r;
+  }
+
   void prepare_statistics() {
     if constexpr (Features::statistics) {
       stats_vertex_face_.resize(std::max<std::size_t>(stats_vertex_face_.size(), store_.size()));
@@ -496,6 +531,8 @@ class Simulation {
   Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
   Buffer<double, Space> energy_pairs_, energy_walls_;  // contact_energy(), per particle
   Buffer<Index, Space> energy_wall_contacts_;
+  Buffer<SampleTally, Space> tally_parts_;  // reduce_in_order's partial tallies
+  ParticleStore<Real, Space> kept_;         // keep_state()
   Buffer<Real, Space> slot_reals_[9];  // pairs once: force, contact point, patch moment (x, y, z each)
   Buffer<std::uint8_t, Space> slot_state_;
   Buffer<Real, Space> slot_overlap_;

@@ -25,6 +25,7 @@
 #include <random>
 #include <string>
 #include "pipeline/run_log.hpp"
+#include "verification/cases/single_body.hpp"
 #include "verification/report.hpp"
 #include "verification/run_program.hpp"
 #include "verification/scenes.hpp"
@@ -74,7 +75,7 @@ LoggedRun logged_run(LoggedSim<Law>& sim, const Vec3<double>& g, double height, 
   {
     RunLog<double> log(path, 1.0, 1.0, g, height);
     for (long k = 0; k <= steps; k += every) {
-      log.sample(sim, sim.state());
+      log.sample(sim);
       if (k < steps) sim.run(static_cast<std::uint64_t>(std::min(every, steps - k)));
     }
     out.worst_penetration = log.worst_penetration();
@@ -277,6 +278,83 @@ BOOST_AUTO_TEST_CASE(contact_energy_matches_a_brute_force_sum) {
   check_relative({kCase, "contact_energy() walls vs host sum over walls and drum", "-", "every wall contact"}, e.walls, walls,
                  tol::stored_energy_sum);
   BOOST_TEST(e.wall_contacts == touching);
+}
+
+// A time-series sample is reduced where the particles live (Simulation::sample(), a kernel and
+// reduce_in_order): its energies and mass against the host's sums over a downloaded state
+// (energies(), blaze/sim/energy.hpp), for moving, spinning, overlapping spheres in float and double
+// and for a spinning cube (moments from the polyhedron table on the device); the kept state
+// (keep_state(), what a guard writes as last_good.vtu) is the state at the keep, bit for bit.
+template <class Real>
+void check_sample_against_host(unsigned seed) {
+  using Law = ContactLaw<Real, Hertz, NoFriction>;
+  auto s = random_spheres<Real>(3000, 1e-3, 3e-3, 0.05, seed);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> n01(0, 1);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    s.velocity[k] = vec_cast<Real>(Vec3<double>{n01(rng), n01(rng), n01(rng)} * 0.1);
+    s.angular_velocity[k] = vec_cast<Real>(Vec3<double>{n01(rng), n01(rng), n01(rng)} * 30.0);
+  }
+  const Vec3<double> g{0.3, -9.81, 0.1};
+  LoggedSim<Law> sim(params<Real>(1e-7, g, 0.07, 1e-3), one_law(Law{Hertz<Real>::from_modulus(5e7, 0), {}}, 2),
+                     closed_box<Real>(0.03), s);
+  sim.run(20);
+  const ParticleState<Real> st = sim.state();
+  const Energies host = energies(st, vec_cast<Real>(g));
+  double mass = 0;
+  for (Real m : st.mass) mass += static_cast<double>(m);
+  sim.keep_state();
+  const auto smp = sim.sample(0.01);
+  const char* precision = sizeof(Real) == 4 ? "float" : "double";
+  const std::string what = std::string(" (sample() vs host sum, 3000 spheres, ") + precision + ")";
+  check_relative({kCase, "translational energy" + what, "-", "same terms, another order"}, smp.energies.translational,
+                 host.translational, tol::stored_energy_sum);
+  check_relative({kCase, "rotational energy" + what, "-", "same terms, another order"}, smp.energies.rotational,
+                 host.rotational, tol::stored_energy_sum);
+  check_relative({kCase, "potential energy" + what, "-", "same terms, another order"}, smp.energies.potential,
+                 host.potential, tol::stored_energy_sum);
+  check_relative({kCase, "mass" + what, "-", "same terms, another order"}, smp.mass, mass, tol::stored_energy_sum);
+  BOOST_TEST(smp.stored.pairs > 0);  // the random fill overlaps
+  BOOST_TEST(smp.vertex_face > 0);
+  BOOST_TEST(smp.penetration.worst > 0);
+  BOOST_TEST(smp.penetration.worst_id >= 0);
+  sim.run(30);
+  const ParticleState<Real> kept = sim.kept_state(), now = sim.state();
+  BOOST_TEST_REQUIRE(kept.size() == st.size());
+  bool same = true, moved = false;
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    same = same && kept.position[k].x == st.position[k].x && kept.position[k].y == st.position[k].y &&
+           kept.velocity[k].z == st.velocity[k].z && kept.angular_velocity[k].x == st.angular_velocity[k].x &&
+           kept.id[k] == st.id[k] && kept.mass[k] == st.mass[k] && kept.inertia[k].x == st.inertia[k].x;
+    moved = moved || now.position[k].x != st.position[k].x;
+  }
+  BOOST_TEST(same, "kept_state() is the state at keep_state()");
+  BOOST_TEST(moved, "the run went on after the keep");
+}
+
+BOOST_AUTO_TEST_CASE(a_sample_reduced_in_place_matches_the_host_sums) {
+  for (unsigned seed : {3u, 4u}) {
+    check_sample_against_host<double>(seed);
+    check_sample_against_host<float>(seed);
+  }
+  // a spinning, moving cube: its moments come from the shape table in the kernel
+  using Law = ContactLaw<double, Hertz, NoFriction>;
+  const ConvexShape cube = cases::thesis_cube();
+  auto sim = cases::body_over_floor<Law>(cube, 2500, Law{Hertz<double>::from_modulus(5e7, 0), {}}, floor_square<double>(0, 0.05),
+                                         normalized(Quat<double>{0.9, 0.3, 0.2, 0.1}), {0, 0.01, 0}, {0.2, -0.1, 0.3}, {0, -9.81, 0}, 1e-6,
+                                         {-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1});
+  ParticleState<double> st = sim.state();
+  st.angular_velocity[0] = {40, -25, 10};
+  auto spun = cases::body_over_floor<Law>(cube, 2500, Law{Hertz<double>::from_modulus(5e7, 0), {}}, floor_square<double>(0, 0.05),
+                                          st, {0, -9.81, 0}, 1e-6, {-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1});
+  const Energies host = energies(spun.state(), Vec3<double>{0, -9.81, 0});
+  const auto smp = spun.sample(0.01);
+  BOOST_TEST(smp.stored.walls == 0.0);  // above the floor
+  BOOST_TEST_REQUIRE(host.rotational > 0);
+  check_relative({kCase, "cube: rotational energy, sample() vs host sum", "-", "one body, the same formula"},
+                 smp.energies.rotational, host.rotational, tol::stored_energy_sum);
+  check_relative({kCase, "cube: translational energy, sample() vs host sum", "-", "one body, the same formula"},
+                 smp.energies.translational, host.translational, tol::stored_energy_sum);
 }
 
 #if BLAZE_DEVICE_CODE

@@ -373,8 +373,10 @@ constexpr double energy_balance_wobble = 0.25;  // x (omega dt)^2 of the scale
 // the linear force; for Hertz's delta^(3/2) the error is O(h^(5/2)) near delta = 0, (5e-4)^2.5 =
 // 6e-9 relative.
 constexpr double stored_energy_integral = 1e-7;
-// contact_energy() against a host sum with the same collide() and the same law: the two differ
-// only in summation order (~400 terms of one sign, a few ulps each).
+// contact_energy() against a host sum with the same collide() and the same law, and a sample's
+// energies and mass (Simulation::sample(), reduced in place) against the host's sums over the
+// downloaded state: the two differ only in summation order (400-3000 terms, a few ulps each;
+// potential energy has terms of both signs, but of one magnitude within the box).
 constexpr double stored_energy_sum = 1e-12;
 // Spheres at rest on a floor (a column of 5, or 9 apart) against the static closed forms: velocity
 // Verlet's fixed point is the exact static equilibrium (no dt error at rest); what is left is
@@ -382,7 +384,8 @@ constexpr double stored_energy_sum = 1e-12;
 // CSV's 10 digits (5e-10 of each value); measured 1e-10 to 3e-10 (2026-12).
 constexpr double resting_column = 1e-6;
 // contact_energy() on the GPU against the CPU, same state: the same double expressions, which the
-// GPU contracts into fused multiply-adds (a few ulps of each of ~1e4 terms of one sign).
+// GPU contracts into fused multiply-adds, added in the two backends' orders (reduce_in_order): a
+// few ulps of each of ~1e4 terms of one sign.
 constexpr double cpu_gpu_contact_energy = 1e-12;
 // The time series' columns are written to 10 significant digits, each rounded by up to 5e-10
 // of itself (a value with leading digit 1), so kinetic + potential + elastic - total and

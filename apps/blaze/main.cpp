@@ -166,9 +166,9 @@ int run_scene(const Scene& s, const Options& o) {
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
   RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
                    resume_at);
-  // The last sampled state that passed the guards, shared with the frame being written (no copy).
-  std::shared_ptr<const ParticleState<Real>> last_good =
-      std::make_shared<const ParticleState<Real>>(o.restart.empty() ? particles : sim.state());
+  // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
+  // it is downloaded only if a guard stops the run.
+  sim.keep_state();
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
   int frame = 0;
@@ -200,9 +200,10 @@ int run_scene(const Scene& s, const Options& o) {
     } catch (const std::exception& w) {  // the guard's report and last_good.vtu come first
       std::fprintf(stderr, "blaze: a frame could not be written: %s\n", w.what());
     }
-    write_particles_vtu(dir + "/last_good.vtu", *last_good);
+    const ParticleState<Real> last_good = sim.kept_state();
+    write_particles_vtu(dir + "/last_good.vtu", last_good);
     std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
-                 "lower dt or check the contact parameters\n", e.what(), last_good->size(), dir.c_str());
+                 "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
     return 3;
   };
   // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
@@ -221,21 +222,22 @@ int run_scene(const Scene& s, const Options& o) {
     if (checkpoint_every && k > first && k % checkpoint_every == 0)
       write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save());
     if (write_csv || write_vtu) {
+      if (write_csv) log.sample(sim);  // the guards: a state that trips one is not a good one
+      sim.keep_state();
+    }
+    if (write_vtu) {  // in the background; the .pvd names a frame once it is written
       const auto st = std::make_shared<const ParticleState<Real>>(sim.state());
-      if (write_csv) log.sample(sim, *st);  // the guards: a state that trips one is not a good one
-      last_good = st;
-      if (write_vtu)  // in the background; the .pvd names a frame once it is written
-        frames.start([&, st, f = frame++, t = sim.time()] {
-          char name[64];
-          std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
-          write_particles_vtu(dir + "/" + name, *st);
-          pvd.add(t, name);
-          if constexpr (polyhedra) {
-            std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", f);
-            write_polyhedra_vtu(dir + "/" + name, *st, shapes);
-            pvd_faces.add(t, name);
-          }
-        });
+      frames.start([&, st, f = frame++, t = sim.time()] {
+        char name[64];
+        std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
+        write_particles_vtu(dir + "/" + name, *st);
+        pvd.add(t, name);
+        if constexpr (polyhedra) {
+          std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", f);
+          write_polyhedra_vtu(dir + "/" + name, *st, shapes);
+          pvd_faces.add(t, name);
+        }
+      });
     }
     output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
     if (k >= steps) break;  // (a restart may begin at or past the end)

@@ -1,12 +1,14 @@
 // Data-parallel primitives the pipeline needs beyond for_each:
 //   RadixSorter<Space>::sort_pairs  stable sort of (uint32 key, Index value) pairs by key
 //   reduce_max(space, n, f)         max over i of an int-valued functor f(i)
+//   reduce_in_order(space, n, f, p) a deterministic reduction of values f(i) (sums in double)
 // Cuda uses CUB (from the CUDA toolkit's CCCL) with scratch kept between calls, so the time-step
 // loop does not allocate. Host uses our own OpenMP LSD radix sort: CCCL is not a Debian package,
 // and a radix sort over bounded cell keys is O(N) where std::stable_sort is O(N log N).
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 #include "blaze/exec/buffer.hpp"
 #include "blaze/exec/launch.hpp"
@@ -101,6 +103,49 @@ int reduce_max(Host, Index n, const F& f, int init) {
 #pragma omp parallel for reduction(max : result) schedule(static)
   for (Index i = 0; i < n; ++i) result = std::max(result, f(i));
   return result;
+}
+
+// reduce_in_order: V is trivially copyable, V{} the identity, v.combine(w) folds w into v
+// (BLAZE_HD). The n values are cut into a fixed number of parts for the space, each part folded
+// in index order by one thread, the parts folded in order on the host: the same n gives the same
+// result bit for bit on any thread count, with no atomics. Host: contiguous chunks (cache order);
+// Cuda: part t takes i = t, t + parts, ... (coalesced reads). The two backends therefore add in
+// different orders (a few ulps apart in a sum of ~n terms). `parts`: scratch kept by the caller.
+template <class Space>
+inline constexpr Index kReduceParts = 256;
+#if BLAZE_DEVICE_CODE
+template <>
+inline constexpr Index kReduceParts<Cuda> = 16384;
+#endif
+
+template <class V, class F>
+struct ReducePart {
+  F f;
+  V* out;
+  Index n, parts;
+  bool strided;
+  BLAZE_HD void operator()(Index t) const {
+    V v{};
+    if (strided) {
+      for (Index i = t; i < n; i += parts) v.combine(f(i));
+    } else {
+      const Index lo = static_cast<Index>(static_cast<long long>(n) * t / parts);
+      const Index hi = static_cast<Index>(static_cast<long long>(n) * (t + 1) / parts);
+      for (Index i = lo; i < hi; ++i) v.combine(f(i));
+    }
+    out[t] = v;
+  }
+};
+
+template <class V, class F, class Space>
+V reduce_in_order(Space, Index n, const F& f, Buffer<V, Space>& parts) {
+  V v{};
+  if (n <= 0) return v;
+  const Index p = std::min(n, kReduceParts<Space>);
+  if (parts.size() < static_cast<std::size_t>(p)) parts.resize(static_cast<std::size_t>(kReduceParts<Space>));
+  for_each(Space{}, p, ReducePart<V, F>{f, parts.data(), n, p, !std::is_same_v<Space, Host>});
+  for (const V& w : to_host(parts, static_cast<std::size_t>(p))) v.combine(w);
+  return v;
 }
 
 #if BLAZE_DEVICE_CODE

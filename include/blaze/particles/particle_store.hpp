@@ -145,6 +145,26 @@ class ParticleStore {
     scratch_real_.resize(n_);
   }
 
+  // This store becomes a copy of `src`'s state as download() reads it (positions, velocities,
+  // orientations, radii, masses, inertias, materials, types, ids), copied within the space; the
+  // force, torque and scratch arrays stay empty.
+  void copy_state_from(const ParticleStore& src) {
+    n_ = src.n_;
+    const std::size_t n = static_cast<std::size_t>(n_);
+    for (int d = 0; d < 3; ++d) {
+      copy_field(position_[d], src.position_[d], n);
+      copy_field(velocity_[d], src.velocity_[d], n);
+      copy_field(angular_velocity_[d], src.angular_velocity_[d], n);
+    }
+    for (int c = 0; c < 4; ++c) copy_field(orientation_[c], src.orientation_[c], n);
+    copy_field(radius_, src.radius_, n);
+    copy_field(inv_mass_, src.inv_mass_, n);
+    copy_field(inv_inertia_, src.inv_inertia_, n);
+    copy_field(material_, src.material_, n);
+    copy_field(type_, src.type_, n);
+    copy_field(id_, src.id_, n);
+  }
+
   Index size() const { return n_; }
   // Drops the particles [n, size) (they were sorted to the end).
   void truncate(Index n) { n_ = n; }
@@ -208,6 +228,11 @@ class ParticleStore {
     for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_}) f.push_back(c);
     if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
     return f;
+  }
+  template <class T>
+  static void copy_field(Buffer<T, Space>& dst, const Buffer<T, Space>& src, std::size_t n) {
+    if (dst.size() < n) dst.resize(src.size());
+    copy_n(src.data(), n, dst.data(), Space{}, Space{});
   }
   template <class T>
   void permute_one(Buffer<T, Space>& f, Buffer<T, Space>& scratch, const Index* perm) {

@@ -463,8 +463,8 @@ struct PolyhedronShape {
     q = integrate_orientation(q, w_half, dt);
     w = inverse_inertia_times(type, Mat3<Real>::rotation(q), l);
   }
-  Vec3<Real> principal_inertia(Real, std::uint8_t type) const {
-    const Vec3<Real> inv = table.type[type].inv_inertia;
+  BLAZE_HD Vec3<Real> principal_inertia(Real, std::uint8_t type) const {
+    const Vec3<Real> inv = data(type).inv_inertia;
     return {Real(1) / inv.x, Real(1) / inv.y, Real(1) / inv.z};
   }
 

@@ -57,9 +57,9 @@ struct SphereShape {
   BLAZE_HD void drift_rotation(const ParticleView<Real>&, Index, Quat<Real>& q, Vec3<Real>& w, Real dt) const {
     q = integrate_orientation(q, w, dt);
   }
-  // Principal moments for host snapshots.
+  // Principal moments (host snapshots, the time series' energies).
   template <class Real>
-  Vec3<Real> principal_inertia(Real inv_inertia, std::uint8_t) const {
+  BLAZE_HD Vec3<Real> principal_inertia(Real inv_inertia, std::uint8_t) const {
     const Real i = Real(1) / inv_inertia;
     return {i, i, i};
   }

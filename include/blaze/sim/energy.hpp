@@ -10,22 +10,30 @@ namespace blaze {
 
 struct Energies {
   double translational = 0, rotational = 0, potential = 0;
-  double kinetic() const { return translational + rotational; }
-  double total() const { return translational + rotational + potential; }
+  BLAZE_HD double kinetic() const { return translational + rotational; }
+  BLAZE_HD double total() const { return translational + rotational + potential; }
 };
+
+// One body's share, in double from the stored reals (the host snapshot below and the device
+// reduction of a time-series sample, kernels/sample_tally.hpp, both call it): m kg, v m/s, q its
+// orientation, w rad/s in the world frame, I kg m^2 its principal moments, x m, g m/s^2.
+template <class Real>
+BLAZE_HD inline Energies body_energies(double m, const Vec3<Real>& v, const Quat<Real>& q, const Vec3<Real>& w,
+                                       const Vec3<Real>& moments_of_inertia, const Vec3<Real>& x, const Vec3<Real>& g) {
+  Energies e;
+  e.translational = 0.5 * m * norm2(vec_cast<double>(v));
+  const Vec3<double> wb = rotate(Quat<double>{q.w, -q.x, -q.y, -q.z}, vec_cast<double>(w));
+  const Vec3<double> moments = vec_cast<double>(moments_of_inertia);
+  e.rotational = 0.5 * (moments.x * wb.x * wb.x + moments.y * wb.y * wb.y + moments.z * wb.z * wb.z);
+  e.potential = -m * dot(vec_cast<double>(g), vec_cast<double>(x));
+  return e;
+}
 
 // Particle i's share.
 template <class Real>
 Energies particle_energies(const ParticleState<Real>& s, std::size_t i, const Vec3<Real>& gravity) {
-  Energies e;
-  const double m = s.mass[i];
-  e.translational = 0.5 * m * norm2(vec_cast<double>(s.velocity[i]));
-  const Quat<double> q{s.orientation[i].w, s.orientation[i].x, s.orientation[i].y, s.orientation[i].z};
-  const Vec3<double> wb = rotate(Quat<double>{q.w, -q.x, -q.y, -q.z}, vec_cast<double>(s.angular_velocity[i]));
-  const Vec3<double> moments = vec_cast<double>(s.inertia[i]);
-  e.rotational = 0.5 * (moments.x * wb.x * wb.x + moments.y * wb.y * wb.y + moments.z * wb.z * wb.z);
-  e.potential = -m * dot(vec_cast<double>(gravity), vec_cast<double>(s.position[i]));
-  return e;
+  return body_energies(static_cast<double>(s.mass[i]), s.velocity[i], s.orientation[i], s.angular_velocity[i], s.inertia[i],
+                       s.position[i], gravity);
 }
 
 template <class Real>

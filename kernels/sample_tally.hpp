@@ -1,0 +1,67 @@
+// One row of the time series reduced where the particles live (Simulation::sample(), RunLog), so
+// a sample costs a kernel and a few kB back to the host instead of the whole state. Per particle i:
+//   translational, rotational, potential  body_energies() (blaze/sim/energy.hpp)           [J]
+//   mass                                  m_i, for the energy guard's scale                 [kg]
+//   pair_energy, wall_energy, wall_contacts  StoredContactEnergy's slots (contact_energy.hpp),
+//                                         when that kernel ran just before                  [J]
+//   vertex_face, edge_edge                the last force evaluation's counts (statistics)
+//   worst, worst_index, over              deepest overlap / radius since the last reset, its
+//                                         particle (the lowest index on a tie), and the count
+//                                         above `threshold` (Features::monitor)
+// reduce_in_order (exec/primitives.hpp) folds them deterministically.
+#pragma once
+#include "blaze/exec/launch.hpp"
+#include "blaze/particles/particle_store.hpp"
+#include "blaze/sim/energy.hpp"
+
+namespace blaze {
+
+struct SampleTally {
+  double translational = 0, rotational = 0, potential = 0, mass = 0;  // J, J, J, kg
+  double pair_energy = 0, wall_energy = 0;                            // J
+  long long wall_contacts = 0, vertex_face = 0, edge_edge = 0, over = 0;
+  double worst = 0;        // overlap / radius
+  Index worst_index = -1;  // memory index of the deepest (-1: none above 0)
+
+  BLAZE_HD void combine(const SampleTally& o) {
+    translational += o.translational, rotational += o.rotational, potential += o.potential, mass += o.mass;
+    pair_energy += o.pair_energy, wall_energy += o.wall_energy;
+    wall_contacts += o.wall_contacts, vertex_face += o.vertex_face, edge_edge += o.edge_edge, over += o.over;
+    if (o.worst > worst || (o.worst == worst && o.worst_index >= 0 && (worst_index < 0 || o.worst_index < worst_index)))
+      worst = o.worst, worst_index = o.worst_index;
+  }
+};
+
+// Null pointers leave their terms at zero.
+template <class Shape, class Real>
+struct ParticleTally {
+  Shape shape;
+  ParticleView<Real> p;
+  Vec3<Real> gravity;
+  const double* pair_energy;
+  const double* wall_energy;
+  const Index* wall_contacts;
+  const Index* vertex_face;
+  const Index* edge_edge;
+  double threshold;
+
+  BLAZE_HD SampleTally operator()(Index i) const {
+    SampleTally t;
+    const Real m = Real(1) / p.inv_mass[i];
+    const Energies e = body_energies(static_cast<double>(m), p.velocity.get(i), p.orientation.get(i),
+                                     p.angular_velocity.get(i), shape.principal_inertia(p.inv_inertia[i], p.type[i]),
+                                     p.position.get(i), gravity);
+    t.translational = e.translational, t.rotational = e.rotational, t.potential = e.potential;
+    t.mass = static_cast<double>(m);
+    if (pair_energy) t.pair_energy = pair_energy[i], t.wall_energy = wall_energy[i], t.wall_contacts = wall_contacts[i];
+    if (vertex_face) t.vertex_face = vertex_face[i], t.edge_edge = edge_edge[i];
+    if (p.penetration) {
+      const double d = static_cast<double>(p.penetration[i]);
+      t.over = d > threshold;
+      if (d > 0) t.worst = d, t.worst_index = i;
+    }
+    return t;
+  }
+};
+
+}  // namespace blaze
