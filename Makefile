@@ -166,6 +166,15 @@ bench: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze_bench
 	$(BUILD)/$(RUN_BACKEND)/blaze_bench --out bench/results
 
+# make bench-run: `blaze run` on a realistic scene (BENCH_RUN_SCENE, default 1,048,576 spheres
+# falling into a packing; ~1 min on an H200, hours on 2 CPU cores) with and without its output,
+# beside blaze_bench's dense bed at 1e6 (tools/bench_run.sh; a row in bench/results/).
+BENCH_RUN_SCENE ?= bench/scenes/lattice_fall_1m.toml
+.PHONY: bench-run
+bench-run: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/blaze $(BUILD)/$(RUN_BACKEND)/blaze_bench
+	tools/bench_run.sh $(BUILD)/$(RUN_BACKEND) $(BENCH_RUN_SCENE)
+
 # Thesis Table 3.3 (Cundall numbers) with Blaze's rows from the committed GPU results.
 .PHONY: table-3.3
 table-3.3:
@@ -193,8 +202,8 @@ endif
 	python3 tools/perf_figures.py
 
 # ---- angle of repose (studies/repose): mu_s x mu_r sweep, GPU when present -------------------
-# make fig-repose: the 3 x 3 sweep in Blaze -> data/repose/<case>/, data/repose/angles.csv,
-# plots/fig-repose.png. REPOSE_SIZE=full (default with a GPU: ~18 000 beads on a base of 25 d)
+# make fig-repose: the 3 x 3 sweep in Blaze -> REPOSE_DIR/<case>/, REPOSE_DIR/angles.csv,
+# plots/fig-repose.png (small) or plots/fig-repose-full.png. REPOSE_SIZE=full (default with a GPU: ~18 000 beads on a base of 25 d)
 # or small (default without: ~1 250 beads on 10 d, E = 1e7 Pa). make fig-repose-liggghts: the
 # same piles in LIGGGHTS on the CPU (REPOSE_LIGGGHTS_CASES, mu_s:mu_r), their angles beside Blaze's.
 REPOSE_SIZE ?= $(if $(and $(HAVE_GPU),$(NVCC)),full,small)
@@ -204,23 +213,23 @@ REPOSE_SETS_full :=
 REPOSE_SETS_small := --set base_radius=10 --set hopper_width=16 --set orifice=7 --set particles=1100 --set end_time=2 \
   --set 'material[0].youngs_modulus=1e7' --set 'material[1].youngs_modulus=1e7'
 REPOSE_SETS := $(REPOSE_SETS_$(REPOSE_SIZE))
+# the small sweep's results in data/repose/ (beside LIGGGHTS's), the full one's in data/repose/full/
+REPOSE_DIR := $(if $(filter full,$(REPOSE_SIZE)),data/repose/full,data/repose)
+# cases at a time: the GPU runs all nine together (each pile leaves it mostly idle), the CPU one
+REPOSE_JOBS ?= $(if $(filter cuda,$(RUN_BACKEND)),9,1)
 REPOSE_LIGGGHTS_CASES ?= 0.2:0.05 0.4:0.05 0.6:0.05
 .PHONY: fig-repose fig-repose-liggghts
 fig-repose: deps
 	@echo "fig-repose: backend = $(RUN_BACKEND), size = $(REPOSE_SIZE)"
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_repose
-	@for mus in $(REPOSE_MU_S); do for mur in $(REPOSE_MU_R); do \
-	  $(BUILD)/$(RUN_BACKEND)/study_repose studies/repose/repose.toml $(REPOSE_SETS) \
-	    --set "pair[0].friction=$$mus" --set "pair[1].friction=$$mus" \
-	    --set "pair[0].rolling_friction=$$mur" --set "pair[1].rolling_friction=$$mur" \
-	    --set output.directory=data/repose/mus$${mus}_mur$${mur}; \
-	  rc=$$?; [ $$rc -eq 0 ] || [ $$rc -eq 2 ] || exit $$rc; done; done
-	gnuplot plots/repose.gp
-	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
+	tools/repose_sweep.sh $(BUILD)/$(RUN_BACKEND)/study_repose $(REPOSE_DIR) $(REPOSE_JOBS) "$(REPOSE_MU_S)" "$(REPOSE_MU_R)" \
+	  -- $(REPOSE_SETS)
+	gnuplot -e "dir='$(REPOSE_DIR)'; size='$(REPOSE_SIZE)'" plots/repose.gp
+	@echo "wrote $(REPOSE_DIR)/angles.csv, plots/fig-repose$(if $(filter full,$(REPOSE_SIZE)),-full).png"
 fig-repose-liggghts: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/study_repose
-	tools/repose_liggghts.sh --blaze $(BUILD)/cpu/study_repose $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS)
-	gnuplot plots/repose.gp
+	tools/repose_liggghts.sh --blaze $(BUILD)/cpu/study_repose $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS_small)
+	gnuplot -e "dir='data/repose'; size='small'" plots/repose.gp
 	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).

@@ -114,8 +114,7 @@ Row measure(Sim& sim, const char* shape, const char* law_name, const char* preci
   const long phase_steps = std::max(10L, steps / 4);
   sim.run(static_cast<std::uint64_t>(phase_steps));
   const auto phase_seconds = [&](const char* ph) {
-    const auto it = sim.timer().seconds().find(ph);
-    return it == sim.timer().seconds().end() ? 0.0 : it->second;
+    return sim.timer().seconds(ph);
   };
   for (const char* ph : kPhases) row.phase_ms.push_back(1e3 * phase_seconds(ph) / phase_steps);
   if constexpr (Sim::features::statistics) {  // from the last step of the fenced stretch

@@ -41,7 +41,11 @@
 //     mu_s ~ 0.3-0.4 glass on glass, mu_r ~ 0.01-0.1 for near-spheres (Wensrich & Katterfeld,
 //     Powder Technol. 217 (2012) 409, read mu_r as a shape parameter).
 // Writes <output directory>/{profile.csv, manifest.txt, pile.vtu, walls.vtu} and a row of
-// data/repose/angles.csv (both codes' angles side by side; --measure fills the LIGGGHTS columns).
+// angles.csv beside it (data/repose/angles.csv for the sweep's directories; both codes' angles side
+// by side, --measure fills the LIGGGHTS columns).
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -73,9 +77,21 @@ std::string num(double v) {
   return b;
 }
 
-// One row per (mu_s, mu_r) in data/repose/angles.csv; a run replaces its own code's columns only.
+// One row per (mu_s, mu_r) in angles.csv beside the case's output directory (data/repose/ for
+// data/repose/mus0.4_mur0.05); a run replaces its own code's columns only.
 void record(const Scene& s, const std::map<std::string, std::string>& cols) {
-  const std::string path = "data/repose/angles.csv";
+  const std::filesystem::path parent = std::filesystem::path(s.output.directory).lexically_normal().parent_path();
+  const std::string path = (parent.empty() ? std::filesystem::path(".") : parent).string() + "/angles.csv";
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  // cases run side by side (tools/repose_sweep.sh): one writer at a time reads, merges and writes
+  const int lock = ::open((path + ".lock").c_str(), O_CREAT | O_RDWR, 0644);
+  if (lock >= 0) ::flock(lock, LOCK_EX);
+  struct Unlock {
+    int fd;
+    ~Unlock() {
+      if (fd >= 0) ::close(fd);  // closing releases the lock
+    }
+  } unlock{lock};
   const std::vector<std::string> header = {"case", "mu_s", "mu_r", "blaze_deg", "blaze_rms_mm", "blaze_particles",
                                            "blaze_wall_s", "blaze_backend", "liggghts_deg", "liggghts_rms_mm",
                                            "liggghts_particles", "liggghts_wall_s"};
@@ -93,7 +109,6 @@ void record(const Scene& s, const std::map<std::string, std::string>& cols) {
   auto& row = rows[key];
   row["case"] = key, row["mu_s"] = num(s.pairs[0].friction), row["mu_r"] = num(s.pairs[0].rolling_friction);
   for (const auto& [k, v] : cols) row[k] = v;
-  std::filesystem::create_directories("data/repose");
   std::ofstream out(path);
   for (std::size_t k = 0; k < header.size(); ++k) out << header[k] << (k + 1 < header.size() ? ',' : '\n');
   for (auto& [name, r] : rows)

@@ -3,9 +3,10 @@
 // phase to finish before the next is queued, so work is attributed to the phase that queued it
 // (at the cost of one synchronisation per phase: benchmarks enable it, production runs do not).
 #pragma once
-#include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 #include "blaze/exec/stopwatch.hpp"
 
 namespace blaze {
@@ -25,13 +26,25 @@ class PhaseTimer {
     fence(Space{});
     watch_->start();
     f();
-    seconds_[phase] += watch_->stop_seconds();
+    const double t = watch_->stop_seconds();
+    for (auto& [name, total] : seconds_)
+      if (name == phase) {
+        total += t;
+        return;
+      }
+    seconds_.emplace_back(phase, t);
   }
-  const std::map<std::string, double>& seconds() const { return seconds_; }
+  // Seconds per phase, in the order the phases first ran (the pipeline's order).
+  const std::vector<std::pair<std::string, double>>& seconds() const { return seconds_; }
+  double seconds(const std::string& phase) const {
+    for (const auto& [name, total] : seconds_)
+      if (name == phase) return total;
+    return 0;
+  }
   void reset() { seconds_.clear(); }
 
  private:
-  std::map<std::string, double> seconds_;
+  std::vector<std::pair<std::string, double>> seconds_;
   std::shared_ptr<Stopwatch<Space>> watch_;  // created on first use (no CUDA call before then)
 };
 
