@@ -215,8 +215,10 @@ REPOSE_SETS_small := --set base_radius=10 --set hopper_width=16 --set orifice=7 
 REPOSE_SETS := $(REPOSE_SETS_$(REPOSE_SIZE))
 # the small sweep's results in data/repose/ (beside LIGGGHTS's), the full one's in data/repose/full/
 REPOSE_DIR := $(if $(filter full,$(REPOSE_SIZE)),data/repose/full,data/repose)
-# cases at a time: the GPU runs all nine together (each pile leaves it mostly idle), the CPU one
-REPOSE_JOBS ?= $(if $(filter cuda,$(RUN_BACKEND)),9,1)
+# cases at a time. 1 on a GPU as well: nine full-size piles sharing an H200 as nine processes
+# (no MPS) ran 2.7x slower in total than one after another (the GPU switches between the
+# processes' contexts; 2026-12-02: each reached t = 0.95 s in 575 s, alone a pile takes ~93 s).
+REPOSE_JOBS ?= 1
 REPOSE_LIGGGHTS_CASES ?= 0.2:0.05 0.4:0.05 0.6:0.05
 .PHONY: fig-repose fig-repose-liggghts
 fig-repose: deps

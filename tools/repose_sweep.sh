@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# make fig-repose's sweep: study_repose for every (mu_s, mu_r), JOBS at a time (on a GPU the
-# piles are small and mostly wait on launches, so several share it well), each case in
+# make fig-repose's sweep: study_repose for every (mu_s, mu_r), JOBS at a time (on CPU cores; not
+# on one GPU: processes sharing it without MPS run slower in total, Makefile), each case in
 # DIR/mus<mu_s>_mur<mu_r>/ with its log beside it, the angles in DIR/angles.csv (the study locks
 # it while it writes its row). Exit status: the first failing case's (2, "not at rest by
 # end_time", counts as done).
