@@ -1,8 +1,13 @@
 // Particle-world contact forces (thesis Algorithm 2.1, line 6), added to the particle's force and
-// torque. Walls are immovable here (infinite mass, zero velocity): m_eff = m_i. A contact with a
-// patch (contact_patch.hpp) adds the patch's moment about the contact point to the torque. A law
-// with history keeps each wall contact's state in a slot of the particle keyed by the object
-// (contact_history.hpp): found or claimed when touching, freed when the contact opens.
+// torque. Walls have infinite mass: m_eff = m_i. A moving object (blaze/world/motion.hpp; its
+// pose placed by the move-world phase) enters the contact through its velocity at the contact
+// point, v_w = omega x (x - o) + u', in the relative velocity (and omega in the rolling laws'
+// relative spin), and does the work F . v_w dt on the particle per step, which is added to the
+// particle's drive-work account (ParticleView::drive_work) for the energy balance; a removed
+// object is skipped. A contact with a patch (contact_patch.hpp) adds the patch's moment about the
+// contact point to the torque. A law with history keeps each wall contact's state in a slot of
+// the particle keyed by the object (contact_history.hpp): found or claimed when touching, freed
+// when the contact opens.
 #pragma once
 #include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
@@ -39,6 +44,7 @@ struct WorldForces {
     Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
     Real deepest = 0;
     unsigned seen = 0;  // slots of objects touched this step
+    Real work = 0;      // J, done this step by moving objects on i
     // Object w (polygons first, then cylinders: the world's object index).
     const auto apply = [&](const auto& g, int material, int w) {
       if (!g.touching) return;
@@ -48,6 +54,8 @@ struct WorldForces {
       const Vec3<Real> zero{0, 0, 0};
       const Vec3<Real> wi = Features::rotation ? p.angular_velocity.get(i) : zero;
       const Vec3<Real> vi = p.velocity.get(i);
+      const Pose<Real>* pose = world.pose ? world.pose + w : nullptr;  // null: the object stands still
+      const Vec3<Real> w_wall = pose ? pose->omega : zero;
       const Law& law = laws(p.material[i], material);
       const Real m_eff = Real(1) / p.inv_mass[i];
       int h = -1;  // the contact's slot (laws with history)
@@ -61,16 +69,19 @@ struct WorldForces {
       }
       ContactForce<Real> c;
       if constexpr (is_patch_geometry_v<std::decay_t<decltype(g)>>) {  // contact_patch.hpp
-        const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(vi, wi, x - body.x, zero, zero, zero); };
-        c = contact_patch_force(law, g, v_rel, wi, m_eff, state, dt);
+        const auto v_rel = [&](const Vec3<Real>& x) {
+          return Kinematics::relative(vi, wi, x - body.x, pose ? pose->velocity_at(x) : zero, zero, zero);
+        };
+        c = contact_patch_force(law, g, v_rel, wi - w_wall, m_eff, state, dt);
       } else {
-        ContactMotion<Real> m{Kinematics::relative(vi, wi, ri, zero, zero, zero), wi, m_eff};
+        ContactMotion<Real> m{Kinematics::relative(vi, wi, ri, pose ? pose->velocity_at(g.point) : zero, zero, zero), wi - w_wall, m_eff};
         if constexpr (Law::kRolling) m.inv_rolling_inertia = rolling_term(p, i, ri);  // the wall: I_j infinite
         c = law.evaluate(g, m, state, dt);
       }
       if constexpr (Law::kHistory)
         if (h >= 0) history.store(h, i, state);
       f += c.force;
+      if (pose) work += dot(c.force, pose->velocity_at(g.point)) * dt;
       if constexpr (Features::rotation) {
         if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>>) t += cross(ri, c.force) + c.moment;
         else t += cross(ri, c.force);
@@ -78,11 +89,12 @@ struct WorldForces {
     };
     int w = 0;
     for (int k = 0; k < world.polygon_count; ++k, ++w)
-      apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material, w);
+      if (!world.pose || world.pose[w].active) apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material, w);
     for (int k = 0; k < world.cylinder_count; ++k, ++w)
-      apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material, w);
+      if (!world.pose || world.pose[w].active) apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material, w);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
+    if (p.drive_work && dt > Real(0)) p.drive_work[i] += work;
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
     if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);

@@ -2,12 +2,14 @@
 // dissipated so far, contacts by kind, particles removed, penetration. One row per sample:
 //   t_s, particles, removed, kinetic_translational_J, kinetic_rotational_J, potential_J, elastic_J,
 //   total_J, dissipated_J, contacts_vertex_face, contacts_edge_edge, contacts_wall,
-//   max_penetration_ratio, penetration_over_limit, worst_penetration_id
+//   max_penetration_ratio, penetration_over_limit, worst_penetration_id, drive_work_J
 // elastic_J: the energy stored in the open contacts, particle-particle and particle-wall
 // (Simulation::contact_energy(): the laws' stored_energy, 1/2 K_n delta^2 or (2/5) K_n delta^(5/2)).
 // total_J = kinetic_translational_J + kinetic_rotational_J + potential_J + elastic_J = E(t).
-// dissipated_J = E(0) - E(t) - E_removed: what the dashpots, friction and drag took out, so that
-//   E(0) = E(t) + dissipated_J + E_removed          (energy in = energy out + stored)
+// drive_work_J = W(t): the work moving world objects did on the particles so far (F . v_wall dt
+//   per contact and step, kernels/world_forces.hpp; zero in a static world).
+// dissipated_J = E(0) + W(t) - E(t) - E_removed: what the dashpots, friction and drag took out,
+//   so that E(0) + W(t) = E(t) + dissipated_J + E_removed     (energy in = energy out + stored)
 // holds in every row; an elastic, frictionless run keeps dissipated_J at zero up to the
 // integrator's O((omega dt)^2) wobble (verification/test_energy_balance.cpp). E_removed is the
 // kinetic and potential energy the removed particles had when they were removed
@@ -20,16 +22,17 @@
 // only at the sample: a particle over `limit` is counted and the worst named (the thesis warns
 // at 5%). Particles leaving the domain are reported the sample after they left.
 //
-// Energy guard: nothing feeds energy in (walls are static), so E(t) + E_removed <= E(0) up to the
+// Energy guard: nothing but the moving walls feeds energy in, so E(t) + E_removed <= E(0) + W(t) up to the
 // integrator's O(dt^2) wobble, with E(t) including the elastic energy (so the guard is not
 // loosened by energy hidden in the contacts). A gain above `energy_gain_limit` x scale, scale =
 // initial kinetic + initial elastic energy + sum m |g| h (h: the domain's extent along g, so the
-// most energy the bed can exchange), is an unstable step: sample() throws EnergyGain before it
-// writes that row, so no row with created energy reaches the file. (Walls that move will do work
-// on the bed; the balance must then include that work.)
+// most energy the bed can exchange) + |W(t)| (the walls' work is summed once per step, so its
+// error grows with it), is an unstable step: sample() throws EnergyGain before it
+// writes that row, so no row with created energy reaches the file.
 // Checkpoints keep E(0) and the scale (save(), resume()); the text names the energy's parts, and a
 // checkpoint whose E(0) left out the elastic energy is refused (its dissipated_J would jump).
 #pragma once
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -54,7 +57,7 @@ class RunLog {
       : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height) {
     std::string kept = "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,elastic_J,total_J,"
                        "dissipated_J,contacts_vertex_face,contacts_edge_edge,contacts_wall,max_penetration_ratio,"
-                       "penetration_over_limit,worst_penetration_id\n";
+                       "penetration_over_limit,worst_penetration_id,drive_work_J\n";
     if (keep_until >= 0) {
       std::ifstream in(path);
       std::string line;
@@ -71,14 +74,16 @@ class RunLog {
   void resume(const std::string& saved) {
     if (std::sscanf(saved.c_str(), "e0=%lf scale=%lf", &e0_, &scale_) != 2)
       throw std::runtime_error("checkpoint: no energy bookkeeping in its run text");
+    const auto w = saved.find(" work=");  // absent before moving walls: none was done
+    work_ = w == std::string::npos ? 0.0 : std::stod(saved.substr(w + 6));
     if (saved.find(kEnergyParts) == std::string::npos)
       throw std::runtime_error("checkpoint: its E(0) leaves out the elastic energy of the contacts (written before "
                                "elastic_J was part of total_J); rerun from the start");
     started_ = true;
   }
   std::string save() const {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "e0=%.17g scale=%.17g %s", e0_, scale_, kEnergyParts);
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "e0=%.17g scale=%.17g work=%.17g %s", e0_, scale_, work_, kEnergyParts);
     return buf;
   }
 
@@ -95,23 +100,26 @@ class RunLog {
       e0_ = total, scale_ = e.translational + e.rotational + stored.total() + exchange, started_ = true;
     }
     const double removed_energy = sim.removed_energy();
-    const double gain = total + removed_energy - e0_;
-    if (scale_ > 0 && gain > gain_limit_ * scale_) {
-      char msg[320];
-      std::snprintf(msg, sizeof msg, "t = %.6g s (step %llu): the energy rose %.3g J above its initial value, %.3g of "
-                    "the scale %.3g J (limit %.3g, [output] energy_gain_limit); nothing feeds energy in, so the time step is "
-                    "unstable",
-                    sim.time(), static_cast<unsigned long long>(sim.steps()), gain, gain / scale_, scale_, gain_limit_);
+    work_ += smp.drive_work;
+    const double gain = total + removed_energy - work_ - e0_;
+    // the balance's error grows with the energy that went through it: moving walls add |W|
+    const double scale = scale_ + std::abs(work_);
+    if (scale > 0 && gain > gain_limit_ * scale) {
+      char msg[360];
+      std::snprintf(msg, sizeof msg, "t = %.6g s (step %llu): the energy rose %.3g J above its initial value plus the "
+                    "moving walls' work (%.3g J), %.3g of the scale %.3g J (limit %.3g, [output] energy_gain_limit); "
+                    "nothing else feeds energy in, so the time step is unstable",
+                    sim.time(), static_cast<unsigned long long>(sim.steps()), gain, work_, gain / scale, scale, gain_limit_);
       throw EnergyGain(msg);
     }
-    max_gain_ = std::max(max_gain_, gain / scale_);
+    max_gain_ = std::max(max_gain_, gain / scale);
 
     const long vf = smp.vertex_face, ee = smp.edge_edge;
     const PenetrationReport& pen = smp.penetration;
     out_ << sim.time() << ',' << sim.size() << ',' << sim.removed_count() << ',' << e.translational << ','
          << e.rotational << ',' << e.potential << ',' << stored.total() << ',' << total << ','
-         << e0_ - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
-         << ',' << pen.over << ',' << pen.worst_id << '\n';
+         << e0_ + work_ - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
+         << ',' << pen.over << ',' << pen.worst_id << ',' << work_ << '\n';
     if (pen.over > 0 && warnings_++ < kMaxWarnings)
       std::printf("warning: t = %.6g s: %ld particles exceeded %.3g%% penetration since the last sample; deepest "
                   "%.3g%% (particle id %d)%s\n",
@@ -141,6 +149,7 @@ class RunLog {
   Vec3<Real> gravity_;
   double height_;
   double e0_ = 0, scale_ = 0, worst_ = 0, max_gain_ = -1e300;
+  double work_ = 0;  // J, W(t)
   bool started_ = false;
   long warnings_ = 0, over_samples_ = 0;
   Index reported_removed_ = 0;

@@ -23,6 +23,7 @@
 #include "kernels/contact_forces.hpp"
 #include "kernels/pair_forces.hpp"
 #include "kernels/integrate.hpp"
+#include "kernels/move_world.hpp"
 #include "kernels/world_forces.hpp"
 
 namespace blaze {
@@ -104,9 +105,9 @@ class Simulation {
     check_params(params);
     check_materials(laws, world, particles);
     reside_shape();
-    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor);  // checks the lengths
+    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic());  // checks the lengths
     check_finite(particles, 0);
-    world_.upload(world);
+    world_.upload(world, 0, static_cast<double>(params.dt));
     initial_count_ = store_.size();
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     configure_contacts(world);
@@ -130,8 +131,9 @@ class Simulation {
     check_materials(laws, world, materials_only);
     reside_shape();
     store_.restore(snap.store);
-    world_.upload(world);
     steps_ = snap.steps;
+    world_.upload(world, steps_, static_cast<double>(params.dt));
+    if (world.dynamic()) store_.keep_drive_work();
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;
     removed_mass_ = snap.removed_mass;
@@ -214,6 +216,7 @@ class Simulation {
     ContactEnergy stored;   // J, the open contacts' elastic energy; world contacts
     long vertex_face = 0, edge_edge = 0;  // particle-particle contacts by kind, each pair once
     PenetrationReport penetration;
+    double drive_work = 0;  // J, done by moving world objects on the particles since the last sample
   };
   Sample sample(double penetration_limit) {
     const SampleTally t = tally(true, penetration_limit);
@@ -224,9 +227,15 @@ class Simulation {
     if (stats_vertex_face_.size() >= static_cast<std::size_t>(store_.size()))
       s.vertex_face = static_cast<long>(t.vertex_face / 2), s.edge_edge = static_cast<long>(t.edge_edge / 2);
     s.penetration = penetration(t);
+    s.drive_work = t.drive_work;
     store_.reset_penetration();
+    store_.reset_drive_work();
     return s;
   }
+  // The world moves or loses objects at set times (blaze/world/motion.hpp).
+  bool world_moves() const { return world_.dynamic(); }
+  // Each object's pose now (a static world: none).
+  std::vector<Pose<Real>> world_poses() const { return world_.dynamic() ? world_.poses() : std::vector<Pose<Real>>{}; }
   // A copy of the state kept on the particles' memory space (keep_state()) and read back only
   // when asked (kept_state()): what `blaze run` writes as last_good.vtu when a guard stops it,
   // without a download at every sample. Costs the state's arrays once more (~16 reals and
@@ -324,7 +333,7 @@ class Simulation {
   // The step (phases.hpp): every phase in order. A phase added here runs in every step, batched
   // or not. Builds the functors from the current views (a rebuild moves and resizes them), after
   // sizing what they write (statistics, pair slots).
-  static constexpr int kRebuildCheck = 1, kFirstForcePhase = 2, kPostForcePhase = 6;
+  static constexpr int kRebuildCheck = 2, kFirstForcePhase = 3, kPostForcePhase = 7;
   // history_dt: the step the contact states advance by (0 for the forces at t = 0).
   auto step_phases(Real history_dt) {
     prepare_statistics();
@@ -333,6 +342,7 @@ class Simulation {
     const ParticleView<Real> p = store_.view();
     const NeighbourView nl = broad_.neighbours();
     auto phases = make_phases(
+        kernel_phase("move-world", MoveWorld<Real>{world_.motion_view(), store_.size()}, world_.dynamic()),
         kernel_phase("integrate", integrate<Stage::pre_force>()),
         check_phase("rebuild-check", broad_.rebuild_check_functor(store_)),
         kernel_phase("contacts", contact_forces(history_dt), !once),

@@ -436,4 +436,35 @@ constexpr double repose_synthetic_cone_deg = 0.25;
 // case) recovered within 1 deg: the bins' maxima scatter by ~d/2, the fit over 12 bins averages it.
 constexpr double repose_rough_cone_deg = 1.0;
 
+
+// --- moving world objects (issue 19; verification/test_moving_world.cpp) ---
+// A pose's velocity field against the central difference of its placement (h = 1e-6 s): the
+// difference's truncation error is h^2/6 |x'| ~ 1e-12 of the speed here, its rounding 1e-16 / h
+// = 1e-10; 1e-7 leaves room for the ramps' kinks (a sample time within h of a kink) and fails
+// at once for a wrong factor or a missing term.
+constexpr double pose_velocity_difference = 1e-7;
+// A sphere carried by a turntable: once spun up it sticks (the tangential spring holds it), so it
+// moves at omega x r up to the spring's elastic offset, which follows the centripetal force
+// m omega^2 r / k_t; measured 9e-7 to 6e-6 of omega r (2026-12). 1e-4 is 17x the worst.
+constexpr double carried_by_wall = 1e-4;
+// A sphere on a vibrating plate: below Gamma = 1 it never leaves (the largest gap stays negative,
+// the contact's compression), at Gamma = 1.02 it does, briefly: the gap it opens was measured at
+// 1.7e-3 A at 15 and 40 Hz (2 um of 1.1 mm, 0.28 um of 0.16 mm; the contact's stiffness moves the
+// threshold by (omega / omega_n)^2 < 1e-3 here). 1e-4 A is 17x below that and ~1e6 above rounding.
+constexpr double lift_off_gap = 1e-4;
+// A sphere hit by a wall translating at V leaves at (1 + e) V: the linear law's restitution is
+// exact in the continuous contact, and at dt = t_c / 200 velocity Verlet's error in e is ~1e-4;
+// 1% is the restitution bound the thesis's checks use.
+constexpr double moving_wall_restitution = 0.01;
+// The drive work of an elastic hit, booked as F . v_wall dt per step: with v_wall = V constant it
+// is V sum F dt = V m dv, and velocity Verlet's velocity change is exactly sum F dt / m, so W
+// equals m V dv = 1/2 m (2V)^2 = the kinetic energy given (e = 1) up to rounding and the
+// restitution's own error; measured 5e-8 and 7e-8 (2026-12). A wall that accelerates during a
+// contact would add O(dt) of the contact's work.
+constexpr double moving_wall_work = 1e-6;
+// A sphere released by a removed wall: the contact vanishes with the wall (its stored energy
+// (m g)^2 / (2 k) leaves the balance as dissipated), and the sphere falls freely from rest:
+// v = g t up to the release time's O(dt) (dt / 0.1 s = 4e-4); measured 1.4e-4 (2026-12).
+constexpr double removed_wall_fall = 1e-3;
+
 }  // namespace blaze::tol

@@ -24,6 +24,9 @@ struct ParticleView {
   // Deepest overlap / radius of each particle's contacts since the last reset (Features::monitor);
   // null otherwise.
   Real* penetration;
+  // Work done on each particle by moving world objects since the last reset (J; a world that
+  // moves, kernels/world_forces.hpp); null otherwise.
+  Real* drive_work;
 };
 
 template <class T>
@@ -50,7 +53,8 @@ template <class Real, class Space>
 class ParticleStore {
  public:
   static constexpr std::size_t kRadiusField = StoreSnapshot<Real>::kRadiusField;
-  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false) {
+  // drive_work: keep each particle's account of the work moving walls do on it.
+  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false, bool drive_work = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
     std::vector<Real> inv_m(n_), inv_i(n_);
@@ -80,6 +84,7 @@ class ParticleStore {
     from_host(type_, s.type);
     from_host(id_, s.id);
     from_host(penetration_, std::vector<Real>(monitor ? n_ : 0, Real(0)));
+    from_host(drive_work_, std::vector<Real>(drive_work ? n_ : 0, Real(0)));
     scratch_real_.resize(n_);
   }
 
@@ -112,13 +117,20 @@ class ParticleStore {
   void reset_penetration() {
     if (penetration_.size()) for_each(Space{}, n_, Fill<Real>{penetration_.data(), Real(0)});
   }
+  void reset_drive_work() {
+    if (drive_work_.size()) for_each(Space{}, n_, Fill<Real>{drive_work_.data(), Real(0)});
+  }
+  // A restored run whose world moves but whose checkpoint had no account (all zero from here).
+  void keep_drive_work() {
+    if (drive_work_.size() < static_cast<std::size_t>(n_)) from_host(drive_work_, std::vector<Real>(n_, Real(0)));
+  }
 
   ParticleView<Real> view() {
     return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
             field(torque_), field(acceleration_prev_), field(torque_prev_),
             {orientation_[0].data(), orientation_[1].data(), orientation_[2].data(), orientation_[3].data()},
             radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), type_.data(), id_.data(),
-            penetration_.size() ? penetration_.data() : nullptr};
+            penetration_.size() ? penetration_.data() : nullptr, drive_work_.size() ? drive_work_.data() : nullptr};
   }
 
   using Snapshot = StoreSnapshot<Real>;
@@ -132,9 +144,12 @@ class ParticleStore {
   }
   void restore(const Snapshot& s) {
     const auto fields = real_fields();
-    if (s.reals.size() != fields.size()) throw std::invalid_argument("particle snapshot: wrong number of fields");
+    // a snapshot from before the drive-work account (its last field) restores without one
+    if (s.reals.size() != fields.size() && s.reals.size() + 1 != fields.size())
+      throw std::invalid_argument("particle snapshot: wrong number of fields");
     n_ = static_cast<Index>(s.id.size());
-    for (std::size_t k = 0; k < fields.size(); ++k) {
+    drive_work_.resize(0);
+    for (std::size_t k = 0; k < s.reals.size(); ++k) {
       if (!s.reals[k].empty() && s.reals[k].size() != s.id.size())
         throw std::invalid_argument("particle snapshot: field " + std::to_string(k) + " has the wrong length");
       from_host(*fields[k], s.reals[k]);
@@ -185,6 +200,7 @@ class ParticleStore {
     permute_one(type_, scratch_u8_, perm);
     permute_one(id_, scratch_index_, perm);
     if (penetration_.size()) permute_one(penetration_, scratch_real_, perm);
+    if (drive_work_.size()) permute_one(drive_work_, scratch_real_, perm);
   }
 
   // Bytes held per particle (for benchmarks).
@@ -193,7 +209,8 @@ class ParticleStore {
     for (const auto* f : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
       for (const auto& c : *f) b += c.size() * sizeof(Real);
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
-    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size()) * sizeof(Real);
+    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size() + drive_work_.size()) *
+         sizeof(Real);
     b += material_.size() + type_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
     return b;
   }
@@ -225,7 +242,7 @@ class ParticleStore {
     for (auto* v : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
       for (auto& c : *v) f.push_back(&c);
     for (auto& c : orientation_) f.push_back(&c);
-    for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_}) f.push_back(c);
+    for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_, &drive_work_}) f.push_back(c);
     if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
     return f;
   }
@@ -249,6 +266,7 @@ class ParticleStore {
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
   Buffer<Real, Space> penetration_;  // Features::monitor only
+  Buffer<Real, Space> drive_work_;   // a moving world only
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;

@@ -1,10 +1,17 @@
 // World objects (thesis section 3.2.1): everything that is not a particle. One host description,
 // one device store, one view; kernels loop over each object kind with that kind's collide().
-// New kinds (triangle meshes, moving walls) add an array here and a collide() overload.
+// New kinds (triangle meshes) add an array here and a collide() overload.
+// Objects may move (motion.hpp): each keeps its reference geometry, and a phase of the step
+// (kernels/move_world.hpp) places the current geometry and records the pose; the world kernel
+// reads the pose for the wall's velocity at a contact and skips objects that were removed.
 #pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 #include "blaze/exec/buffer.hpp"
 #include "blaze/world/cylinder.hpp"
+#include "blaze/world/motion.hpp"
 #include "blaze/world/planar_polygon.hpp"
 
 namespace blaze {
@@ -13,8 +20,42 @@ template <class Real>
 struct World {
   std::vector<PlanarPolygon<Real>> polygons;
   std::vector<Cylinder<Real>> cylinders;
+  // Per object (polygons first, then cylinders: the world's object index); empty: all static.
+  std::vector<Motion> motions;
   bool empty() const { return polygons.empty() && cylinders.empty(); }
+  int object_count() const { return static_cast<int>(polygons.size() + cylinders.size()); }
+  // Any object moves or is removed at some time.
+  bool dynamic() const {
+    for (const auto& m : motions)
+      if (!m.is_static()) return true;
+    return false;
+  }
+  void set_motion(int object, const Motion& m) {
+    if (object < 0 || object >= object_count()) throw std::out_of_range("world: no object " + std::to_string(object));
+    motions.resize(static_cast<std::size_t>(object_count()));
+    motions[static_cast<std::size_t>(object)] = m;
+  }
+  Motion motion(int object) const {
+    return static_cast<std::size_t>(object) < motions.size() ? motions[static_cast<std::size_t>(object)] : Motion{};
+  }
 };
+
+// The reference geometry placed by a pose.
+template <class Real>
+BLAZE_HD PlanarPolygon<Real> moved(const PlanarPolygon<Real>& ref, const Pose<Real>& p) {
+  PlanarPolygon<Real> w = ref;
+  for (int k = 0; k < ref.vertex_count; ++k) w.vertex[k] = p.place(ref.vertex[k]);
+  w.normal = p.turn(ref.normal);
+  w.centroid = p.place(ref.centroid);
+  return w;
+}
+template <class Real>
+BLAZE_HD Cylinder<Real> moved(const Cylinder<Real>& ref, const Pose<Real>& p) {
+  Cylinder<Real> c = ref;
+  c.origin = p.place(ref.origin);
+  c.axis = p.turn(ref.axis);
+  return c;
+}
 
 template <class Real>
 struct WorldView {
@@ -22,24 +63,76 @@ struct WorldView {
   int polygon_count;
   const Cylinder<Real>* cylinders;
   int cylinder_count;
+  const Pose<Real>* pose;  // per object; null: a static world (every object still, none removed)
+};
+
+// What the move-world phase reads and writes (kernels/move_world.hpp).
+template <class Real>
+struct WorldMotionView {
+  const PlanarPolygon<Real>* polygon_ref;
+  PlanarPolygon<Real>* polygons;
+  int polygon_count;
+  const Cylinder<Real>* cylinder_ref;
+  Cylinder<Real>* cylinders;
+  int cylinder_count;
+  const Motion* motion;
+  Pose<Real>* pose;
+  std::uint64_t* step;  // per object: the step its pose is for (t = step dt)
+  double dt;            // s
 };
 
 template <class Real, class Space>
 class WorldStore {
  public:
-  void upload(const World<Real>& w) {
-    from_host(polygons_, w.polygons);
-    from_host(cylinders_, w.cylinders);
+  // The world as it stands after `step` steps of dt (a restored run continues where it was).
+  void upload(const World<Real>& w, std::uint64_t step, double dt) {
+    if (!w.motions.empty() && w.motions.size() != static_cast<std::size_t>(w.object_count()))
+      throw std::invalid_argument("world: motions must be given for every object or none");
+    dynamic_ = w.dynamic();
+    dt_ = dt;
+    if (!dynamic_) {
+      from_host(polygons_, w.polygons);
+      from_host(cylinders_, w.cylinders);
+      return;
+    }
+    const int n = w.object_count();
+    std::vector<Pose<Real>> poses(static_cast<std::size_t>(n));
+    std::vector<PlanarPolygon<Real>> polygons(w.polygons);
+    std::vector<Cylinder<Real>> cylinders(w.cylinders);
+    const double t = static_cast<double>(step) * dt;
+    for (int k = 0; k < n; ++k) poses[static_cast<std::size_t>(k)] = pose_at<Real>(w.motions[static_cast<std::size_t>(k)], t);
+    for (std::size_t k = 0; k < polygons.size(); ++k) polygons[k] = moved(w.polygons[k], poses[k]);
+    for (std::size_t k = 0; k < cylinders.size(); ++k) cylinders[k] = moved(w.cylinders[k], poses[w.polygons.size() + k]);
+    from_host(polygon_ref_, w.polygons);
+    from_host(cylinder_ref_, w.cylinders);
+    from_host(polygons_, polygons);
+    from_host(cylinders_, cylinders);
+    from_host(motions_, w.motions);
+    from_host(poses_, poses);
+    from_host(steps_, std::vector<std::uint64_t>(static_cast<std::size_t>(n), step));
   }
   WorldView<Real> view() const {
-    return {polygons_.data(), static_cast<int>(polygons_.size()), cylinders_.data(),
-            static_cast<int>(cylinders_.size())};
+    return {polygons_.data(), static_cast<int>(polygons_.size()), cylinders_.data(), static_cast<int>(cylinders_.size()),
+            dynamic_ ? poses_.data() : nullptr};
+  }
+  WorldMotionView<Real> motion_view() {
+    return {polygon_ref_.data(), polygons_.data(), static_cast<int>(polygons_.size()), cylinder_ref_.data(), cylinders_.data(),
+            static_cast<int>(cylinders_.size()), motions_.data(), poses_.data(), steps_.data(), dt_};
   }
   bool empty() const { return polygons_.size() == 0 && cylinders_.size() == 0; }
+  // Some object moves or is removed at a time: the step places the world first (move-world).
+  bool dynamic() const { return dynamic_; }
+  // Poses as they stand (tests, output).
+  std::vector<Pose<Real>> poses() const { return to_host(poses_, poses_.size()); }
 
  private:
-  Buffer<PlanarPolygon<Real>, Space> polygons_;
-  Buffer<Cylinder<Real>, Space> cylinders_;
+  Buffer<PlanarPolygon<Real>, Space> polygons_, polygon_ref_;
+  Buffer<Cylinder<Real>, Space> cylinders_, cylinder_ref_;
+  Buffer<Motion, Space> motions_;
+  Buffer<Pose<Real>, Space> poses_;
+  Buffer<std::uint64_t, Space> steps_;
+  bool dynamic_ = false;
+  double dt_ = 0;
 };
 
 }  // namespace blaze
