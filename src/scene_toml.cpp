@@ -652,11 +652,101 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
   return total;
 }
 
+// An object's `motion` table (blaze/world/motion.hpp) and its `remove_time`.
+// `label`: the object's, for messages ("[[wall]] #2"); `prefix`: its place, for where() ("wall[1]").
+Motion read_motion(Fields& object, const std::string& file, const std::string& label, const std::string& prefix, Scene& s) {
+  Motion m;
+  m.remove = object.number_or("remove_time", kInf, non_negative("s"));
+  const toml::node* n = object.get("motion");
+  if (!n) return m;
+  if (!n->is_table()) object.fail(*n, "motion", "a table: motion = { kind = \"rotation\", ... }");
+  const std::vector<std::string> kinds = {"none", "rotation", "translation", "vibration"};
+  Fields f(*n->as_table(), label + " motion", file,
+           {"kind", "axis", "point", "rpm", "omega", "velocity", "amplitude", "frequency", "direction", "start_time", "ramp_time"});
+  if (!f.has("kind")) f.missing("kind", "one of \"rotation\", \"translation\", \"vibration\", \"none\"");
+  m.kind = static_cast<MotionKind>(f.choice("kind", kinds, 0));
+  m.start = f.number_or("start_time", 0, non_negative("s"));
+  m.ramp = f.number_or("ramp_time", 0, non_negative("s"));
+  // the keys each kind takes; any other is an error naming the kind
+  const std::vector<std::vector<std::string>> used = {{},
+                                                      {"axis", "point", "rpm", "omega"},
+                                                      {"velocity"},
+                                                      {"amplitude", "frequency", "direction"}};
+  for (const std::string key : {"axis", "point", "rpm", "omega", "velocity", "amplitude", "frequency", "direction"}) {
+    const auto& mine = used[static_cast<std::size_t>(m.kind)];
+    if (f.has(key) && std::find(mine.begin(), mine.end(), key) == mine.end())
+      f.fail(*f.get(key), key, "not a key of kind = \"" + kinds[static_cast<std::size_t>(m.kind)] + "\" (it takes " +
+                                   (mine.empty() ? std::string("none: only start_time and ramp_time") : [&] {
+                                     std::string t;
+                                     for (const auto& k : mine) t += (t.empty() ? "" : ", ") + k;
+                                     return t;
+                                   }()) + ")");
+  }
+  const Range direction{-1e9, 1e9, false, false, "(direction)"};
+  const auto unit = [&](const std::string& key) {
+    const Vec3<double> v = f.vec3(key, direction);
+    if (!(norm(v) > 0)) f.fail(*f.get(key), key, "a non-zero direction");
+    return v * (1 / norm(v));
+  };
+  switch (m.kind) {
+    case MotionKind::rotation: {
+      m.axis = unit("axis");
+      m.point = f.vec3("point", position("m"));
+      if (f.has("rpm") == f.has("omega"))
+        f.fail(f.has("rpm") ? *f.get("omega") : *f.get("kind"), f.has("rpm") ? "omega" : "kind",
+               "a rotation takes exactly one of rpm (revolutions per minute) and omega (rad/s), signed by the right-hand rule about axis");
+      const Range spin{-1e7, 1e7, false, false, f.has("rpm") ? "rpm" : "rad/s"};
+      m.omega = f.has("rpm") ? f.number("rpm", spin) * 2 * 3.14159265358979323846 / 60 : f.number("omega", spin);
+      break;
+    }
+    case MotionKind::translation:
+      m.velocity = f.vec3("velocity", speed());
+      break;
+    case MotionKind::vibration:
+      m.amplitude = f.number("amplitude", up_to(kMaxCoordinate, "m"));
+      m.frequency = f.number("frequency", up_to(1e7, "Hz"));
+      m.direction = unit("direction");
+      if (!(2 * 3.14159265358979323846 * m.frequency * m.amplitude <= kMaxSpeed))
+        f.fail(*f.get("frequency"), "frequency", "a peak speed 2 pi f A of at most " + std::to_string(kMaxSpeed) + " m/s");
+      break;
+    case MotionKind::none:
+      break;
+  }
+  f.note(s, prefix + ".motion.", {"kind", "start_time", "ramp_time"});
+  return m;
+}
+
+// The fastest a point of an object moves (m/s): |omega| times its farthest point from the axis,
+// |V|, or 2 pi f A (the ramps only approach these).
+double peak_speed(const Motion& m, const std::vector<Vec3<double>>& points) {
+  switch (m.kind) {
+    case MotionKind::rotation: {
+      double reach = 0;
+      for (const auto& x : points) {
+        const Vec3<double> r = x - m.point;
+        reach = std::fmax(reach, norm(r - m.axis * dot(r, m.axis)));
+      }
+      return std::fabs(m.omega) * reach;
+    }
+    case MotionKind::translation: return norm(m.velocity);
+    case MotionKind::vibration: return 2 * 3.14159265358979323846 * m.frequency * m.amplitude;
+    case MotionKind::none: return 0;
+  }
+  return 0;
+}
+
+void note_wall_speed(Scene& s, const std::string& label, const std::string& where, double v) {
+  if (v > 0 && s.max_impact_speed > 0 && v > s.max_impact_speed)
+    s.notes.push_back("note: " + where + ": " + label + " moves at up to " + std::to_string(v) +
+                      " m/s, above [simulation] max_impact_speed = " + std::to_string(s.max_impact_speed) +
+                      " m/s: its impacts may overlap more than the time step was chosen for");
+}
+
 void read_world(const toml::table& root, const std::string& file, Scene& s) {
   const auto materials = material_names(s);
   const auto walls = tables(root, "wall", file);
   for (std::size_t k = 0; k < walls.size(); ++k) {
-    Fields f(*walls[k], item_label("wall", k), file, {"name", "material", "vertices", "rim"});
+    Fields f(*walls[k], item_label("wall", k), file, {"name", "material", "vertices", "rim", "motion", "remove_time"});
     WallSpec w;
     w.name = f.string_or("name", "", "a non-empty name");
     w.material = lookup(f, "material", materials, "material");
@@ -683,11 +773,14 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
         f.fail(*rim, "rim", allowed);
       }
     }
+    w.motion = read_motion(f, file, item_label("wall", k), "wall[" + std::to_string(k) + "]", s);
+    note_wall_speed(s, item_label("wall", k), f.where_of("motion"), peak_speed(w.motion, w.vertices));
     s.walls.push_back(w);
   }
   const auto cylinders = tables(root, "cylinder", file);
   for (std::size_t k = 0; k < cylinders.size(); ++k) {
-    Fields f(*cylinders[k], item_label("cylinder", k), file, {"material", "origin", "axis", "radius", "length"});
+    Fields f(*cylinders[k], item_label("cylinder", k), file,
+             {"material", "origin", "axis", "radius", "length", "motion", "remove_time"});
     CylinderSpec c;
     c.material = lookup(f, "material", materials, "material");
     c.origin = f.vec3("origin", position("m"));
@@ -695,6 +788,16 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
     if (!(norm(c.axis) > 0)) f.fail(*f.get("axis"), "axis", "a non-zero direction");
     c.radius = f.number("radius", up_to(kMaxCoordinate, "m"));
     c.length = f.number("length", up_to(kMaxCoordinate, "m"));
+    c.motion = read_motion(f, file, item_label("cylinder", k), "cylinder[" + std::to_string(k) + "]", s);
+    // the shell's farthest points: the rims of its two ends
+    const Vec3<double> u = c.axis * (1 / norm(c.axis));
+    Vec3<double> side = std::fabs(u.x) < 0.9 ? cross(u, Vec3<double>{1, 0, 0}) : cross(u, Vec3<double>{0, 1, 0});
+    side = side * (c.radius / norm(side));
+    const Vec3<double> side2 = cross(u, side);
+    std::vector<Vec3<double>> rim;
+    for (const Vec3<double> end : {c.origin, c.origin + u * c.length})
+      for (const Vec3<double> d : {side, side * -1.0, side2, side2 * -1.0}) rim.push_back(end + d);
+    note_wall_speed(s, item_label("cylinder", k), f.where_of("motion"), peak_speed(c.motion, rim));
     s.cylinders.push_back(c);
   }
 }

@@ -201,6 +201,64 @@ BOOST_AUTO_TEST_CASE(study_values_wall_names_and_rim_edges) {
                  "key 'energy_gain_limit' = 0: must be in (0, 1]"));
 }
 
+// A wall's motion table and removal time (issue 19): accepted as written, built into the world's
+// motions; every bad value named with file:line, key, value and what that kind of motion takes.
+BOOST_AUTO_TEST_CASE(wall_motions_are_read_and_bad_ones_named) {
+  const auto with_motion = [](const std::string& line) { return kBase + line + "\n"; };
+  const Scene r = parse_scene(with_motion("motion = { kind = \"rotation\", axis = [0, 0, 2], point = [0.1, 0, 0], rpm = 30, "
+                                          "start_time = 0.5, ramp_time = 1 }\nremove_time = 3"),
+                              "scene.toml");
+  const Motion& m = r.walls[0].motion;
+  BOOST_TEST((m.kind == MotionKind::rotation));
+  BOOST_TEST(m.axis.z == 1.0);
+  BOOST_TEST(m.point.x == 0.1);
+  BOOST_TEST(std::fabs(m.omega - kPi) < 1e-15);  // 30 rpm = pi rad/s
+  BOOST_TEST(m.start == 0.5);
+  BOOST_TEST(m.ramp == 1.0);
+  BOOST_TEST(m.remove == 3.0);
+  const World<double> w = build_world<double>(r);
+  BOOST_TEST_REQUIRE(w.motions.size() == 1u);
+  BOOST_TEST(w.dynamic());
+  BOOST_TEST(build_world<double>(parse_scene(kBase, "scene.toml")).motions.empty());  // static: no motions carried
+  // a wall faster than max_impact_speed is noted (its impacts overlap more than dt was chosen for)
+  const Scene fast = parse_scene(edit("end_time =", "end_time = 0.01\nmax_impact_speed = 1.5",
+                                      with_motion("motion = { kind = \"translation\", velocity = [0, 3, 0] }")),
+                                 "scene.toml");
+  bool noted = false;
+  for (const auto& n : fast.notes) noted = noted || has(n, "moves at up to 3");
+  BOOST_TEST(noted);
+
+  struct Bad {
+    const char* line;
+    const char* key_value;
+    const char* allowed;
+  };
+  const Bad bad[] = {
+      {"motion = { kind = \"spin\" }", "key 'kind' = \"spin\"", "one of \"none\" \"rotation\" \"translation\" \"vibration\""},
+      {"motion = { kind = \"rotation\", axis = [0, 1, 0], point = [0, 0, 0] }", "key 'kind'", "exactly one of rpm"},
+      {"motion = { kind = \"rotation\", axis = [0, 0, 0], point = [0, 0, 0], rpm = 3 }", "key 'axis' = [0, 0, 0]",
+       "a non-zero direction"},
+      {"motion = { kind = \"vibration\", amplitude = 1e-3, frequency = 20, direction = [0, 1, 0], rpm = 3 }", "key 'rpm' = 3",
+       "not a key of kind = \"vibration\" (it takes amplitude, frequency, direction)"},
+      {"motion = { kind = \"vibration\", amplitude = -1e-3, frequency = 20, direction = [0, 1, 0] }", "key 'amplitude' = -0.001",
+       "must be in (0, 1e+09] m"},
+      {"motion = { kind = \"translation\", velocity = [0, 1e6, 0] }", "key 'velocity' = [0, 1e+06, 0]", "m/s"},
+      {"motion = { kind = \"translation\", velocity = [0, 1, 0], start_time = -1 }", "key 'start_time' = -1", "must be >= 0 s"},
+      {"motion = { kind = \"none\", spin_rate = 3 }", "unknown key 'spin_rate'", "allowed: kind, axis, point, rpm"},
+      {"motion = 3", "key 'motion' = 3", "a table"},
+      {"remove_time = -1", "key 'remove_time' = -1", "must be >= 0 s"},
+  };
+  for (const Bad& c : bad) {
+    const std::string text = with_motion(c.line);
+    const std::string msg = rejection([&] { parse_scene(text, "scene.toml"); });
+    BOOST_TEST_CONTEXT("'" << c.line << "': " << msg) {
+      BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line_of(text, c.line))));
+      BOOST_TEST(has(msg, c.key_value));
+      BOOST_TEST(has(msg, c.allowed));
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(poisson_ratio_outside_its_range_is_rejected) {
   for (const char* nu : {"0.5", "-1", "0.7"}) {
     const std::string text = edit("poisson_ratio = 0.23", std::string("poisson_ratio = ") + nu, hertz_scene());

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 #include "blaze/core/vec3.hpp"
+#include "blaze/world/motion.hpp"
 
 namespace blaze {
 
@@ -102,11 +103,13 @@ struct WallSpec {  // convex planar polygon; the normal follows the right-hand r
   int material = 0;
   std::vector<Vec3<double>> vertices;  // m
   std::uint32_t rim_edges = 0xffffffffu;  // bit k: edge k -> k+1 has rim contact
+  Motion motion;  // [wall.motion] and remove_time (blaze/world/motion.hpp); none by default
 };
 struct CylinderSpec {  // drum: particles inside, contact on the inner surface
   int material = 0;
   Vec3<double> origin, axis;  // m, centre of the first end; direction (any length)
   double radius = 0, length = 0;
+  Motion motion;
 };
 
 struct OutputSpec {

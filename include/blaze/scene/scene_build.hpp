@@ -74,6 +74,14 @@ World<Real> build_world(const Scene& s) {
     w.polygons.push_back(PlanarPolygon<Real>::make(p.vertices, static_cast<std::uint8_t>(p.material), p.rim_edges));
   for (const auto& c : s.cylinders)
     w.cylinders.push_back(Cylinder<Real>::make(c.origin, c.axis, c.radius, c.length, static_cast<std::uint8_t>(c.material)));
+  // motions only where an object moves or leaves (a static world carries none: no cost)
+  bool dynamic = false;
+  for (const auto& p : s.walls) dynamic = dynamic || !p.motion.is_static();
+  for (const auto& c : s.cylinders) dynamic = dynamic || !c.motion.is_static();
+  if (dynamic) {
+    for (const auto& p : s.walls) w.motions.push_back(p.motion);
+    for (const auto& c : s.cylinders) w.motions.push_back(c.motion);
+  }
   return w;
 }
 

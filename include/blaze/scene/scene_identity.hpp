@@ -53,6 +53,15 @@ inline SceneIdentity scene_identity(const Scene& s) {
   using namespace identity_detail;
   SceneIdentity id;
   auto add = [&](const std::string& k, const std::string& v) { id.emplace_back(k, v); };
+  // an object's motion and removal, only where it has one (static scenes keep their identity)
+  auto add_motion = [&](const std::string& p, const Motion& m) {
+    if (m.is_static()) return;
+    static const char* const kinds[] = {"none", "rotation", "translation", "vibration"};
+    add(p + "motion", std::string(kinds[static_cast<int>(m.kind)]) + " axis " + vec(m.axis) + " point " + vec(m.point) +
+                          " omega " + num(m.omega) + " velocity " + vec(m.velocity) + " amplitude " + num(m.amplitude) +
+                          " frequency " + num(m.frequency) + " direction " + vec(m.direction) + " start " + num(m.start) +
+                          " ramp " + num(m.ramp) + " remove " + num(m.remove));
+  };
   add("simulation.law", to_string(s.law));
   add("simulation.tangential", to_string(s.tangential));
   add("simulation.rolling", to_string(s.rolling));
@@ -134,6 +143,7 @@ inline SceneIdentity scene_identity(const Scene& s) {
     add(p + "material", s.materials[static_cast<std::size_t>(w.material)].name);
     add(p + "vertices", v);
     add(p + "rim", std::to_string(w.rim_edges));
+    add_motion(p, w.motion);
   }
   for (std::size_t k = 0; k < s.cylinders.size(); ++k) {
     const auto& c = s.cylinders[k];
@@ -143,6 +153,7 @@ inline SceneIdentity scene_identity(const Scene& s) {
     add(p + "axis", vec(c.axis));
     add(p + "radius", num(c.radius));
     add(p + "length", num(c.length));
+    add_motion(p, c.motion);
   }
   for (const auto& v : s.study) add("study." + v.key, num(v.value));
   return id;
