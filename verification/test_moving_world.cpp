@@ -11,7 +11,9 @@
 // - A sphere at rest hit by a wall translating at V: it leaves at (1 + e) V (the restitution in
 //   the wall's frame, 1%), for e = 0.5 and 0.9 and two speeds; with e = 1 the drive work the
 //   run's log books equals the kinetic energy given, 2 m V^2, and the balance holds.
+// - A sphere in a drum spun up rides with the shell while below the friction angle.
 // - A wall removed at t_r: a sphere resting on it is at rest before and falls freely after.
+// - A moving world restarted from a snapshot ends bitwise where the uninterrupted run does.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -120,6 +122,41 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_a_turntable_is_carried_at_omega_cross_r) {
     }
 }
 
+// A drum (horizontal axis, gravity down) spun up from rest: a sphere that cannot spin, resting at
+// its bottom with mu = 1, rides up with the shell (the spring holds it) while the tilt stays below
+// the friction angle (45 degrees): at theta = 0.5 rad its contact point moves with the shell.
+BOOST_AUTO_TEST_CASE(a_sphere_in_a_drum_spun_up_rides_with_the_shell) {
+  using Law = LinearSpringLaw<double>;
+  const double r = 5e-3, kn = 5e4, drum = 0.1;
+  const auto normal = LinearSpringDashpot<double>::from_restitution(kn, 0.3);
+  const Law law{normal, TangentialSpring<double>::linear(1.0, 2.0 / 7.0 * kn, normal.beta)};
+  const double m = 2500 * 4.0 / 3.0 * kPi * r * r * r;
+  for (double sign : {1.0, -1.0}) {
+    ParticleState<double> s;
+    s.add_sphere({0, -(drum - r) - m * kG / kn, 0.02}, r, 2500, 0);
+    World<double> w;
+    w.cylinders.push_back(Cylinder<double>::make({0, 0, 0}, {0, 0, 1}, drum, 0.04, 1));
+    w.set_motion(0, rotation({0, 0, sign}, {0, 0, 0}, 0.5, 1.0));
+    const double dt = 0.02 * 2 * kPi * std::sqrt(m / kn);
+    LeanSim<Law> sim(params<double>(dt, {0, -kG, 0}, 0.2, 1e-3), one_law(law), w, s);
+    sim.run(static_cast<std::uint64_t>(std::llround(1.5 / dt)));
+    const auto st = sim.state();
+    const Vec3<double> x = st.position[0], v = st.velocity[0];
+    const Vec3<double> omega{0, 0, sign * 0.5};  // after the ramp
+    // A sphere that cannot spin moves as its contact point does, and that point sticks to the
+    // shell: v = omega x (contact point), the contact point at radius R on the line to the centre;
+    // its centre (at R - r) so turns by theta R / (R - r).
+    const double tilt = std::atan2(sign * x.x, -x.y);
+    const Vec3<double> contact = Vec3<double>{x.x, x.y, 0} * (drum / std::hypot(x.x, x.y));
+    BOOST_TEST_MESSAGE("drum: tilt " << tilt << " rad (theta R / (R - r) = " << 0.5 * drum / (drum - r) << "), |v| = " << norm(v)
+                                     << " m/s, omega R = " << 0.5 * drum);
+    check_relative({kCase, "sphere in a drum spun up: |v - omega x x_c| / (omega R)", "-", "carried below the friction angle"},
+                   norm(v - cross(omega, contact)) + 0.5 * drum, 0.5 * drum, tol::carried_by_wall);
+    check_relative({kCase, "sphere in a drum spun up: tilt vs theta(t) R / (R - r)", "-", "no slip at the shell"}, tilt,
+                   0.5 * drum / (drum - r), tol::carried_by_wall);
+  }
+}
+
 // A plate vibrating along y at A sin(w t) (ramped in over 0.2 s): a sphere on it stays in contact
 // while the plate's downward acceleration A w^2 stays below g, and leaves it above.
 BOOST_AUTO_TEST_CASE(a_sphere_on_a_vibrating_plate_lifts_off_at_gamma_one) {
@@ -199,6 +236,48 @@ BOOST_AUTO_TEST_CASE(a_sphere_hit_by_a_translating_wall_rebounds_with_the_restit
       }
       std::filesystem::remove(csv);
     }
+}
+
+// A run with a moving wall and a wall removed on the way, stopped half way for a checkpoint: the
+// restored run (the world placed from the step count, the drive-work accounts restored) ends
+// bitwise where the uninterrupted one does, on the CPU.
+BOOST_AUTO_TEST_CASE(a_moving_world_restarts_bitwise) {
+  using Law = LinearSpringLaw<double>;
+  const double r = 3e-3, kn = 2e4;
+  const auto normal = LinearSpringDashpot<double>::from_restitution(kn, 0.5);
+  const Law law{normal, TangentialSpring<double>::linear(0.5, 2.0 / 7.0 * kn, normal.beta)};
+  ParticleState<double> s;
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 6; ++k) s.add_sphere({-0.02 + 0.0075 * i, 0.004 + 0.0002 * ((i + k) % 3), -0.02 + 0.0075 * k}, r, 2500, 0);
+  World<double> w;
+  w.polygons.push_back(floor_square<double>(0, 0.05));
+  w.polygons.push_back(PlanarPolygon<double>::make({{-0.05, 0.03, -0.05}, {0.05, 0.03, -0.05}, {0.05, 0.03, 0.05}, {-0.05, 0.03, 0.05}}, 1));
+  w.set_motion(0, vibration({0, 1, 0}, 1e-3, 25, 0.05));
+  Motion lid;
+  lid.remove = 0.05;
+  w.set_motion(1, lid);
+  using Logged = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+  const auto prm = params<double>(2e-5, {0, -kG, 0}, 0.2, 1e-3);
+  Logged whole(prm, one_law(law), w, s);
+  whole.run(4000);
+  Logged first(prm, one_law(law), w, s);
+  first.run(2000);
+  Logged second(prm, one_law(law), w, first.snapshot());
+  // the same rebuild the snapshot made, in the uninterrupted run's history too
+  Logged reference(prm, one_law(law), w, s);
+  reference.run(2000);
+  (void)reference.snapshot();
+  reference.run(2000);
+  second.run(2000);
+  const auto a = reference.state(), b = second.state();
+  bool same = a.size() == b.size();
+  for (std::size_t k = 0; same && k < a.size(); ++k)
+    same = a.position[k].x == b.position[k].x && a.position[k].y == b.position[k].y && a.velocity[k].y == b.velocity[k].y &&
+           a.angular_velocity[k].z == b.angular_velocity[k].z;
+  BOOST_TEST(same, "restored run bitwise the same as the uninterrupted one");
+  BOOST_TEST(second.sample(1).drive_work == reference.sample(1).drive_work);
+  BOOST_TEST((whole.world_poses()[0].shift.y == second.world_poses()[0].shift.y));
+  BOOST_TEST(!second.world_poses()[1].active);
 }
 
 // A wall removed at t_r = 0.2 s: a sphere resting on it stays put before and falls freely after.
