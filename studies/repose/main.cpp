@@ -12,7 +12,8 @@
 // give) nor by a slot's walls: Zhou et al. 2001-2002 poured into a slot of thickness W and found the
 // angle falling with W, so a 3D conical pile is compared with 3D (conical) measurements. Blaze has no
 // inserter: the beads start as a loose bcc block above the funnel, settle behind a gate in the outlet
-// (a wall removed at [study] gate_open_time, as in studies/hopper), then pour at the funnel's rate
+// (a wall removed at [study] gate_open_time: a timed event, the contacts keep their history, as in
+// studies/hopper), then pour at the funnel's rate
 // from a few d above the apex of the steepest pile, so they land slowly (< 1 m/s).
 // The angle (include/blaze/sim/repose_angle.hpp): the highest bead top per radial bin of width d,
 // a line h = h_0 - tan(theta) r fitted between 0.2 and 0.8 R_in; its rms residual is reported.
@@ -155,12 +156,12 @@ int run(const Scene& s, const ReposeSetup& g, const std::vector<std::string>& ov
   std::uint64_t particle_steps = 0;
   const auto steps = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
 
-  Sim settle(sp, laws, build_world<Real>(s), initial);
-  settle.run(steps(gate_open));
-  particle_steps += settle.size() * steps(gate_open);
-  const World<Real> open_world = build_world<Real>(without_gate(s));
-  write_world_vtu(dir + "/walls.vtu", open_world);
-  Sim pour(sp, laws, open_world, settle.state());
+  // One run: the gate is removed at gate_open_time (a timed event), so the beads' contacts keep
+  // their springs across the opening, as LIGGGHTS's do.
+  Sim pour(sp, laws, build_world<Real>(with_wall_removed_at(s, "gate", gate_open)), initial);
+  pour.run(steps(gate_open));
+  particle_steps += pour.size() * steps(gate_open);
+  write_world_vtu(dir + "/walls.vtu", build_world<Real>(without_gate(s)));
   double t = gate_open, v_rms = 0;
   std::size_t in_funnel = 0;
   std::string stop = "end_time";

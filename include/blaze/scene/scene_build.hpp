@@ -67,6 +67,18 @@ PairTable<Law> build_laws(const Scene& s) {
   return table;
 }
 
+// The scene with the wall named `name` removed at t (s; blaze/world/motion.hpp): a gate opened as
+// a timed event of one run, so the contacts keep their history across it (the hopper and repose
+// studies). The scene must have exactly one wall of that name.
+inline Scene with_wall_removed_at(Scene s, const std::string& name, double t) {
+  int found = 0;
+  for (auto& w : s.walls)
+    if (w.name == name) w.motion.remove = t, ++found;
+  if (found != 1)
+    throw SceneError(s.path + ": needs exactly one [[wall]] with name = \"" + name + "\" (found " + std::to_string(found) + ")");
+  return s;
+}
+
 template <class Real>
 World<Real> build_world(const Scene& s) {
   World<Real> w;
