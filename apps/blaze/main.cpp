@@ -171,12 +171,15 @@ int run_scene(const Scene& s, const Options& o) {
   sim.keep_state();
   if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
+  // A world that moves gets a walls frame with every particles frame (walls.vtu: where it started).
+  std::unique_ptr<PvdCollection> pvd_walls = sim.world_moves() ? std::make_unique<PvdCollection>(dir + "/walls.pvd") : nullptr;
   int frame = 0;
   BackgroundWriter frames;  // VTU frames written while the steps go on (after pvd: it goes first)
   if (!o.restart.empty()) {
     log.resume(restart_log);
     frame = static_cast<int>(pvd.resume(resume_at));
     pvd_faces.resume(resume_at);
+    if (pvd_walls) pvd_walls->resume(resume_at);
     std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
                 static_cast<unsigned long long>(sim.steps()), sim.time());
   }
@@ -227,11 +230,17 @@ int run_scene(const Scene& s, const Options& o) {
     }
     if (write_vtu) {  // in the background; the .pvd names a frame once it is written
       const auto st = std::make_shared<const ParticleState<Real>>(sim.state());
-      frames.start([&, st, f = frame++, t = sim.time()] {
+      const auto walls = pvd_walls ? std::make_shared<const World<Real>>(placed(world, sim.world_poses())) : nullptr;
+      frames.start([&, st, walls, f = frame++, t = sim.time()] {
         char name[64];
         std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
         write_particles_vtu(dir + "/" + name, *st);
         pvd.add(t, name);
+        if (walls) {
+          std::snprintf(name, sizeof name, "vtu/walls_%04d.vtu", f);
+          write_world_vtu(dir + "/" + name, *walls);
+          pvd_walls->add(t, name);
+        }
         if constexpr (polyhedra) {
           std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", f);
           write_polyhedra_vtu(dir + "/" + name, *st, shapes);
@@ -277,7 +286,8 @@ int run_scene(const Scene& s, const Options& o) {
       std::printf(" %s %.4g", phase.c_str(), 1e3 * seconds / static_cast<double>(taken));
     std::printf("\n");
   }
-  std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)\n", dir.c_str(), dir.c_str(), frame);
+  std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)%s\n", dir.c_str(), dir.c_str(), frame,
+              pvd_walls ? " and walls.pvd (the moving world)" : "");
   return 0;
 }
 

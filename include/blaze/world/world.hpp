@@ -57,6 +57,23 @@ BLAZE_HD Cylinder<Real> moved(const Cylinder<Real>& ref, const Pose<Real>& p) {
   return c;
 }
 
+// The world as the poses place it (output): each object moved, removed ones left out, no motions.
+template <class Real>
+World<Real> placed(const World<Real>& ref, const std::vector<Pose<Real>>& poses) {
+  if (poses.empty()) return ref;
+  World<Real> w;
+  std::size_t k = 0;
+  for (const auto& p : ref.polygons) {
+    if (poses[k].active) w.polygons.push_back(moved(p, poses[k]));
+    ++k;
+  }
+  for (const auto& c : ref.cylinders) {
+    if (poses[k].active) w.cylinders.push_back(moved(c, poses[k]));
+    ++k;
+  }
+  return w;
+}
+
 template <class Real>
 struct WorldView {
   const PlanarPolygon<Real>* polygons;
