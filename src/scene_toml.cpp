@@ -802,6 +802,79 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
   }
 }
 
+// [mill] (include/blaze/scene/mill_geometry.hpp): a drum shell, end plates and lifter rows, all
+// turning together, added to the scene's cylinders and walls.
+void read_mill(const toml::table& root, const std::string& file, Scene& s) {
+  const toml::node* node = root.get("mill");
+  if (!node) return;
+  if (!node->is_table()) throw SceneError(where(node->source(), file) + ": 'mill' must be a table, written [mill]");
+  Fields f(*node->as_table(), "[mill]", file,
+           {"material", "centre", "axis", "diameter", "length", "rpm", "omega", "start_time", "ramp_time", "lifters"});
+  MillSpec m;
+  m.present = true;
+  m.material = lookup(f, "material", material_names(s), "material");
+  m.centre = f.vec3("centre", position("m"));
+  m.axis = f.vec3("axis", {-1e9, 1e9, false, false, "(direction)"});
+  if (!(norm(m.axis) > 0)) f.fail(*f.get("axis"), "axis", "a non-zero direction (the drum's axis; an axis of zero length has none)");
+  m.axis = m.axis * (1 / norm(m.axis));
+  m.diameter = f.number("diameter", up_to(kMaxCoordinate, "m"));
+  m.length = f.number("length", up_to(kMaxCoordinate, "m"));
+  if (f.has("rpm") == f.has("omega"))
+    f.fail(f.has("rpm") ? *f.get("omega") : *f.get("diameter"), f.has("rpm") ? "omega" : "rpm",
+           "exactly one of rpm (revolutions per minute) and omega (rad/s), signed by the right-hand rule about axis");
+  m.omega = f.has("rpm") ? f.number("rpm", {-1e6, 1e6, false, false, "rpm"}) * 2 * 3.14159265358979323846 / 60
+                         : f.number("omega", {-1e5, 1e5, false, false, "rad/s"});
+  m.start = f.number_or("start_time", 0, non_negative("s"));
+  m.ramp = f.number_or("ramp_time", 0, non_negative("s"));
+  const double r = 0.5 * m.diameter;
+  if (const toml::node* rows = f.get("lifters")) {
+    const toml::array* list = rows->as_array();
+    const std::string allowed = "a list of tables { count, height, width, face_angle, offset }";
+    if (!list) f.fail(*rows, "lifters", allowed);
+    double occupied = 0;  // of the circumference, m
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const toml::table* t = list->get(k)->as_table();
+      if (!t) f.fail(*list->get(k), "lifters", allowed);
+      Fields g(*t, "[mill] lifters #" + std::to_string(k + 1), file, {"count", "height", "width", "face_angle", "offset"});
+      LifterRowSpec l;
+      l.count = static_cast<int>(g.integer("count", 1, 1000));
+      l.height = g.number("height", {0, r, true, true, "m (below the drum's radius)"});
+      l.width = g.number("width", {0, r, true, true, "m (below the drum's radius)"});
+      l.face_angle = g.number_or("face_angle", 0, {-60, 60, true, true, "deg"});
+      l.offset = g.number_or("offset", 0, {-360, 360, false, false, "deg"});
+      const double top = l.width - 2 * l.height * std::tan(l.face_angle * 3.14159265358979323846 / 180);
+      if (!(top > 1e-6 * l.width))
+        g.fail(*g.get("face_angle"), "face_angle", "a lean whose faces stay apart up to the top: height tan(face_angle) < width / 2");
+      occupied += l.count * l.width;
+      if (occupied >= 2 * 3.14159265358979323846 * r)
+        g.fail(*g.get("count"), "count", "rows whose widths together fit around the shell (pi diameter = " +
+                                             std::to_string(3.14159265358979323846 * m.diameter) + " m)");
+      m.lifters.push_back(l);
+    }
+  }
+  f.note(s, "mill.", {"material", "centre", "axis", "diameter", "length"});
+  const Motion motion = mill_motion(m);
+  CylinderSpec shell;
+  shell.material = m.material;
+  shell.origin = m.centre - m.axis * (0.5 * m.length);
+  shell.axis = m.axis;
+  shell.radius = r;
+  shell.length = m.length;
+  shell.motion = motion;
+  s.cylinders.push_back(shell);
+  for (const MillWall& w : mill_walls(m)) {
+    WallSpec spec;
+    spec.name = "mill " + w.name;
+    spec.material = m.material;
+    spec.vertices = w.vertices;
+    spec.rim_edges = w.rim_edges;
+    spec.motion = motion;
+    s.walls.push_back(spec);
+  }
+  note_wall_speed(s, "[mill]", f.where_of("diameter"), std::fabs(m.omega) * r);
+  s.mill = m;
+}
+
 // Every material that meets another (particle-particle, particle-wall) needs its [[pair]].
 void check_pairs_complete(const toml::table& root, const std::string& file, const Scene& s) {
   std::set<int> particle_materials, world_materials;
@@ -979,7 +1052,7 @@ void check_resolution(Scene& s) {
 Scene read(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(root, o);
   static const std::set<std::string> known = {"simulation", "output", "material", "pair", "particle_type",
-                                              "lattice", "particles", "fill", "wall", "cylinder", "study"};
+                                              "lattice", "particles", "fill", "wall", "cylinder", "mill", "study"};
   for (const auto& [k, v] : root)
     if (!known.count(std::string(k.str()))) {
       std::string allowed;
@@ -1000,6 +1073,7 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
   if (total == 0) throw SceneError(file + ": no particles: add a [[lattice]], [[particles]] or [[fill]]");
   if (total > kMaxParticles) throw SceneError(file + ": " + std::to_string(total) + " particles; at most 2^31 - 1");
   read_world(root, file, s);
+  read_mill(root, file, s);
   check_pairs_complete(root, file, s);
   check_time_step(table(root, "simulation", file), file, s);
   check_impact_speed(table(root, "simulation", file), file, s);

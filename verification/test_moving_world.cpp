@@ -17,6 +17,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
+#include "blaze/scene/mill_geometry.hpp"
 #include "pipeline/run_log.hpp"
 #include "verification/report.hpp"
 #include "verification/run_program.hpp"
@@ -301,6 +302,53 @@ BOOST_AUTO_TEST_CASE(a_removed_wall_lets_its_load_fall) {
   const double fall = sim.time() - 0.2;
   check_relative({kCase, "sphere on a removed wall: speed 0.1 s after the removal vs g t", "-", "free fall from rest"},
                  -sim.state().velocity[0].y, kG * fall, tol::removed_wall_fall);
+}
+
+// The mill's lifters (include/blaze/scene/mill_geometry.hpp): every face's normal points out of
+// its bar; the top lies h inside the shell; a sphere touching a bar is touched once, whether it
+// sits on the top, against a face or over a convex edge (the edge belongs to the top face only),
+// for square and trapezoidal bars at several row angles.
+BOOST_AUTO_TEST_CASE(mill_lifters_are_closed_bars_touched_once) {
+  for (double lean : {0.0, 20.0}) {
+    MillSpec m;
+    m.axis = {0, 0, 1}, m.diameter = 0.9, m.length = 0.15;
+    m.lifters.push_back({5, 0.04, 0.05, lean, 10});
+    const auto walls = mill_walls(m);
+    BOOST_TEST_REQUIRE(walls.size() == 2u + 3u * 5u);
+    const double r = 0.45;
+    for (int k = 0; k < 5; ++k) {
+      std::vector<PlanarPolygon<double>> bar;
+      Vec3<double> centre{0, 0, 0};
+      for (int f = 0; f < 3; ++f) {
+        const auto& w = walls[2 + 3 * k + f];
+        bar.push_back(PlanarPolygon<double>::make(w.vertices, 0, w.rim_edges));
+        centre += bar.back().centroid * (1.0 / 3);
+      }
+      for (const auto& p : bar) BOOST_TEST(dot(p.normal, p.centroid - centre) > 0, "a lifter face looks into its bar");
+      const Vec3<double> top = bar[0].centroid;
+      BOOST_TEST(std::fabs(std::hypot(top.x, top.y) - (std::sqrt(r * r - 0.025 * 0.025) - 0.04)) < 1e-12);
+      // spheres of 1 cm touching the top, each face and each long edge, 1 mm deep
+      const Vec3<double> in = top * (-1 / norm(top));  // from the top towards the axis
+      const Vec3<double> across = cross(Vec3<double>{0, 0, 1}, in * -1.0);
+      const double rs = 0.01, depth = 0.001;
+      std::vector<Vec3<double>> probes = {top + in * (rs - depth)};
+      for (int f = 1; f < 3; ++f) probes.push_back(bar[f].centroid + bar[f].normal * (rs - depth));
+      for (double side : {-1.0, 1.0}) {
+        // over the long edge on this side: its point halfway along, approached along the bisector
+        const Vec3<double> edge = top + across * (side * 0.5 * (0.05 - 2 * 0.04 * std::tan(lean * kPi / 180)));
+        const Vec3<double> face_normal = bar[side < 0 ? 1 : 2].normal;
+        Vec3<double> bisector = in + face_normal;
+        bisector = bisector * (1 / norm(bisector));
+        probes.push_back(edge + bisector * (rs - depth));
+      }
+      for (const auto& x : probes) {
+        int touching = 0;
+        for (const auto& p : bar) touching += collide_sphere(x, rs, p).touching;
+        BOOST_TEST(touching == 1, "lifter " << k << ", lean " << lean << ": a sphere at (" << x.x << ", " << x.y << ") touches "
+                                             << touching << " of its bar's polygons");
+      }
+    }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -259,6 +259,55 @@ BOOST_AUTO_TEST_CASE(wall_motions_are_read_and_bad_ones_named) {
   }
 }
 
+// [mill]: a shell, two end plates and the lifter rows, all turning at the mill's speed; bad mill
+// input (a lifter taller than the radius, an axis of zero length, rows that do not fit around the
+// shell, a lean that closes the bar, both rpm and omega) named with file, line and key.
+BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
+  const std::string mill = "[mill]\nmaterial = \"steel\"\ncentre = [5, 5, 5]\naxis = [0, 0, 1]\ndiameter = 0.9\nlength = 0.15\n"
+                           "rpm = 32\nramp_time = 0.5\nlifters = [{ count = 8, height = 0.04, width = 0.04 }]\n";
+  const Scene s = parse_scene(kBase + mill, "scene.toml");
+  BOOST_TEST_REQUIRE(s.cylinders.size() == 1u);
+  BOOST_TEST(s.cylinders[0].radius == 0.45);
+  BOOST_TEST(s.walls.size() == 1u + 2u + 3u * 8u);  // the base scene's floor, the end plates, 8 bars of 3 faces
+  for (std::size_t k = 1; k < s.walls.size(); ++k) {
+    BOOST_TEST((s.walls[k].motion.kind == MotionKind::rotation));
+    BOOST_TEST(std::fabs(s.walls[k].motion.omega - 32 * 2 * kPi / 60) < 1e-12);
+    BOOST_TEST(s.walls[k].name.rfind("mill ", 0) == 0u);
+  }
+  BOOST_TEST(s.walls[0].motion.is_static());  // the scene's own wall does not turn
+  struct Bad {
+    const char* from;
+    const char* to;
+    const char* key_value;
+    const char* allowed;
+  };
+  const Bad bad[] = {
+      {"height = 0.04", "height = 0.5", "key 'height' = 0.5", "below the drum's radius"},
+      {"axis = [0, 0, 1]", "axis = [0, 0, 0]", "key 'axis' = [0, 0, 0]", "an axis of zero length has none"},
+      {"count = 8", "count = 80", "key 'count' = 80", "fit around the shell"},
+      {"width = 0.04 }", "width = 0.04, face_angle = 40 }", "key 'face_angle' = 40", "height tan(face_angle) < width / 2"},
+      {"rpm = 32", "rpm = 32\nomega = 3", "key 'omega' = 3", "exactly one of rpm"},
+      {"diameter = 0.9", "diameter = -0.9", "key 'diameter' = -0.9", "must be in (0, 1e+09] m"},
+      {"rpm = 32", "rpms = 32", "unknown key 'rpms'", "allowed: material, centre"},
+  };
+  for (const Bad& c : bad) {
+    std::string m2 = mill;
+    m2.replace(m2.find(c.from), std::string(c.from).size(), c.to);
+    const std::string text = kBase + m2;
+    const std::string msg = rejection([&] { parse_scene(text, "scene.toml"); });
+    // the key's line: that of the replacement's last line (the lifters' table for its keys)
+    const std::string to = c.to;
+    const std::string last = to.substr(to.rfind('\n') == std::string::npos ? 0 : to.rfind('\n') + 1);
+    const auto at = text.find(last);
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    BOOST_TEST_CONTEXT("'" << c.to << "': " << msg) {
+      BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line) + ":"));
+      BOOST_TEST(has(msg, c.key_value));
+      BOOST_TEST(has(msg, c.allowed));
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(poisson_ratio_outside_its_range_is_rejected) {
   for (const char* nu : {"0.5", "-1", "0.7"}) {
     const std::string text = edit("poisson_ratio = 0.23", std::string("poisson_ratio = ") + nu, hertz_scene());

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 #include "blaze/core/vec3.hpp"
+#include "blaze/scene/mill_geometry.hpp"
 #include "blaze/world/motion.hpp"
 
 namespace blaze {
@@ -165,6 +166,7 @@ struct Scene {
   std::vector<FillSpec> fills;
   std::vector<WallSpec> walls;
   std::vector<CylinderSpec> cylinders;
+  MillSpec mill;  // [mill]: its shell, end plates and lifters are in cylinders and walls (named "mill ...")
   std::vector<StudyValue> study;
   // "file:line" of the keys that derived sizes and run checks blame, by their --set name
   // ("simulation.dt", "lattice[0].count", "output.csv_interval"); the command line for --set values.
