@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include "blaze/scene/mill_geometry.hpp"
+#include "blaze/sim/charge_profile.hpp"
 #include "pipeline/run_log.hpp"
 #include "verification/report.hpp"
 #include "verification/run_program.hpp"
@@ -349,6 +350,32 @@ BOOST_AUTO_TEST_CASE(mill_lifters_are_closed_bars_touched_once) {
       }
     }
   }
+}
+
+// The charge profile (include/blaze/sim/charge_profile.hpp) of synthetic charges: a packed run of
+// balls against the shell from the toe to the shoulder with sparse balls elsewhere, for both
+// senses of rotation and a run across the drum's top (phi = 180 deg); a band 2 cm deep.
+BOOST_AUTO_TEST_CASE(charge_profile_finds_toe_and_shoulder) {
+  const double R = 0.45;
+  struct Case {
+    double toe, shoulder, sign;
+  };
+  for (const Case c : {Case{-40, 100, 1}, Case{-40, 100, -1}, Case{-75, 35, 1}, Case{150, -150, 1}}) {
+    std::vector<Vec3<double>> x;
+    const auto place = [&](double deg, double depth) {
+      const double phi = c.sign * deg * kPi / 180;  // world angle about +z from -y
+      x.push_back(Vec3<double>{std::sin(phi), -std::cos(phi), 0.01} * (R - depth));
+    };
+    const double span = c.shoulder > c.toe ? c.shoulder - c.toe : c.shoulder + 360 - c.toe;
+    for (double d = 0.25; d < span; d += 0.5) place(c.toe + d, 0.01);           // packed
+    for (double d = span + 5; d < 355; d += 10) place(c.toe + d, 0.01);           // sparse
+    for (double d = 0; d < 360; d += 3) place(d, 0.1);                             // inside, not in the band
+    const ChargeProfile p = charge_profile(x, {0, 0, 0}, {0, 0, 1}, R, 0.02, c.sign);
+    BOOST_TEST_REQUIRE(p.found);
+    BOOST_TEST(p.toe_deg == c.toe, "toe " << p.toe_deg << " vs " << c.toe);
+    BOOST_TEST(p.shoulder_deg == c.shoulder, "shoulder " << p.shoulder_deg << " vs " << c.shoulder);
+  }
+  BOOST_TEST(!charge_profile(std::vector<Vec3<double>>{{0, 0, 0}}, {0, 0, 0}, {0, 0, 1}, R, 0.02, 1).found);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -9,7 +9,9 @@
 // The mean over the revolutions after [study] skip_revolutions (the charge settles into its
 // profile over the first) is the mill's power. The energy balance E(0) + W = E(t) + dissipated
 // closes each revolution: at steady state the drive's power is what the contacts dissipate (the
-// energy method's total; its split by contact class is still to come).
+// energy method's total; its split by contact class is still to come). Each revolution also gives
+// the charge's toe and shoulder (include/blaze/sim/charge_profile.hpp: degrees from the bottom of
+// the drum, positive in its direction of rotation).
 // Writes <output directory>/{power.csv, manifest.txt}; the scene's [output] rows and frames as
 // `blaze run` would are not written (use blaze run for those).
 #include <chrono>
@@ -25,6 +27,7 @@
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
+#include "blaze/sim/charge_profile.hpp"
 #include "pipeline/simulation.hpp"
 
 using namespace blaze;
@@ -52,7 +55,7 @@ int run(const Scene& s) {
   const std::string dir = s.output.directory;
   std::filesystem::create_directories(dir);
   std::ofstream csv(dir + "/power.csv");
-  csv << "revolution,t_end_s,power_W,kinetic_J,dissipated_J,drive_work_J,balls\n";
+  csv << "revolution,t_end_s,power_W,kinetic_J,dissipated_J,drive_work_J,balls,toe_deg,shoulder_deg\n";
   const auto steps_to = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
   const auto wall0 = std::chrono::steady_clock::now();
   const auto e0_sample = sim.sample(s.output.penetration_warning);  // E(0), the balance's start
@@ -68,9 +71,13 @@ int run(const Scene& s) {
     if (rev > 0) {
       const double power = (work - work_at) / period;
       const double dissipated = e0 + work - e - sim.removed_energy();
+      // the charge against the shell: a band of 1.5 ball diameters (charge_profile.hpp)
+      const ChargeProfile cp = charge_profile(sim.state().position, s.mill.centre, s.mill.axis, 0.5 * s.mill.diameter,
+                                              3 * r_max, s.mill.omega > 0 ? 1 : -1);
       csv << rev << ',' << sim.time() << ',' << power << ',' << smp.energies.kinetic() << ',' << dissipated << ',' << work << ','
-          << sim.size() << '\n';
-      std::printf("  revolution %3d (t = %6.2f s): %8.2f W\n", rev, sim.time(), power);
+          << sim.size() << ',' << cp.toe_deg << ',' << cp.shoulder_deg << '\n';
+      std::printf("  revolution %3d (t = %6.2f s): %8.2f W, toe %6.1f deg, shoulder %6.1f deg\n", rev, sim.time(), power,
+                  cp.toe_deg, cp.shoulder_deg);
       if (rev > skip) sum += power, ++averaged;
     }
     work_at = work;
