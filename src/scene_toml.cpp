@@ -716,25 +716,6 @@ Motion read_motion(Fields& object, const std::string& file, const std::string& l
   return m;
 }
 
-// The fastest a point of an object moves (m/s): |omega| times its farthest point from the axis,
-// |V|, or 2 pi f A (the ramps only approach these).
-double peak_speed(const Motion& m, const std::vector<Vec3<double>>& points) {
-  switch (m.kind) {
-    case MotionKind::rotation: {
-      double reach = 0;
-      for (const auto& x : points) {
-        const Vec3<double> r = x - m.point;
-        reach = std::fmax(reach, norm(r - m.axis * dot(r, m.axis)));
-      }
-      return std::fabs(m.omega) * reach;
-    }
-    case MotionKind::translation: return norm(m.velocity);
-    case MotionKind::vibration: return 2 * 3.14159265358979323846 * m.frequency * m.amplitude;
-    case MotionKind::none: return 0;
-  }
-  return 0;
-}
-
 void note_wall_speed(Scene& s, const std::string& label, const std::string& where, double v) {
   if (v > 0 && s.max_impact_speed > 0 && v > s.max_impact_speed)
     s.notes.push_back("note: " + where + ": " + label + " moves at up to " + std::to_string(v) +
@@ -789,15 +770,7 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
     c.radius = f.number("radius", up_to(kMaxCoordinate, "m"));
     c.length = f.number("length", up_to(kMaxCoordinate, "m"));
     c.motion = read_motion(f, file, item_label("cylinder", k), "cylinder[" + std::to_string(k) + "]", s);
-    // the shell's farthest points: the rims of its two ends
-    const Vec3<double> u = c.axis * (1 / norm(c.axis));
-    Vec3<double> side = std::fabs(u.x) < 0.9 ? cross(u, Vec3<double>{1, 0, 0}) : cross(u, Vec3<double>{0, 1, 0});
-    side = side * (c.radius / norm(side));
-    const Vec3<double> side2 = cross(u, side);
-    std::vector<Vec3<double>> rim;
-    for (const Vec3<double> end : {c.origin, c.origin + u * c.length})
-      for (const Vec3<double> d : {side, side * -1.0, side2, side2 * -1.0}) rim.push_back(end + d);
-    note_wall_speed(s, item_label("cylinder", k), f.where_of("motion"), peak_speed(c.motion, rim));
+    note_wall_speed(s, item_label("cylinder", k), f.where_of("motion"), peak_speed(c.motion, c.rim()));
     s.cylinders.push_back(c);
   }
 }

@@ -227,6 +227,9 @@ BOOST_AUTO_TEST_CASE(wall_motions_are_read_and_bad_ones_named) {
   bool noted = false;
   for (const auto& n : fast.notes) noted = noted || has(n, "moves at up to 3");
   BOOST_TEST(noted);
+  // without max_impact_speed, the default impact speed takes the wall's speed on top
+  const Scene moving = parse_scene(with_motion("motion = { kind = \"translation\", velocity = [0, 3, 0] }"), "scene.toml");
+  BOOST_TEST(std::fabs(moving.impact_speed - parse_scene(kBase, "scene.toml").impact_speed - 3) < 1e-12);
 
   struct Bad {
     const char* line;

@@ -12,7 +12,7 @@
 // The Rayleigh time T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)), is the
 // customary second estimate (the time a surface wave crosses the particle); the smaller governs.
 // v is the scene's max_impact_speed, or the largest initial speed plus a fall through the whole
-// domain height, sqrt(2 |g| H) (at least 0.1 m/s).
+// domain height, sqrt(2 |g| H), plus the fastest moving wall's speed (at least 0.1 m/s).
 //
 // Tangential spring (tangential = "mindlin" | "linear_spring", tangential_spring.hpp): the contact
 // point's tangential oscillation has stiffness k_t and inverse mass kappa / m*, kappa = 1 + m r^2/I
@@ -114,7 +114,7 @@ inline double reference_impact_speed(const Scene& s) {
   const double g = norm(s.gravity);
   const Vec3<double> span = s.domain_hi - s.domain_lo;
   const double height = g > 0 ? std::fabs(dot(span, s.gravity)) / g : 0;
-  return std::max(0.1, v0 + std::sqrt(2 * g * height));
+  return std::max(0.1, v0 + std::sqrt(2 * g * height) + s.fastest_wall());  // a moving wall meets them at its own speed more
 }
 
 struct CriticalStep {

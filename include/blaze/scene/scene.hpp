@@ -4,6 +4,7 @@
 // radii and densities, restitution in (0, 1], Poisson ratio in (-1, 0.5), dt > 0, known names.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <map>
@@ -111,6 +112,17 @@ struct CylinderSpec {  // drum: particles inside, contact on the inner surface
   Vec3<double> origin, axis;  // m, centre of the first end; direction (any length)
   double radius = 0, length = 0;
   Motion motion;
+  // Points on the rims of its two ends (the farthest from any axis through it), for peak_speed.
+  std::vector<Vec3<double>> rim() const {
+    const Vec3<double> u = axis * (1 / norm(axis));
+    Vec3<double> side = std::fabs(u.x) < 0.9 ? cross(u, Vec3<double>{1, 0, 0}) : cross(u, Vec3<double>{0, 1, 0});
+    side = side * (radius / norm(side));
+    const Vec3<double> side2 = cross(u, side);
+    std::vector<Vec3<double>> out;
+    for (const Vec3<double> end : {origin, origin + u * length})
+      for (const Vec3<double> d : {side, side * -1.0, side2, side2 * -1.0}) out.push_back(end + d);
+    return out;
+  }
 };
 
 struct OutputSpec {
@@ -202,6 +214,14 @@ struct Scene {
   void check_study_used() const {
     for (const auto& v : study)
       if (!v.used) throw SceneError(v.where + ": [study]: unknown key '" + v.key + "' (this study does not read it)");
+  }
+
+  // The fastest any moving wall or cylinder moves (m/s; motion.hpp's peak_speed).
+  double fastest_wall() const {
+    double v = 0;
+    for (const auto& w : walls) v = std::fmax(v, peak_speed(w.motion, w.vertices));
+    for (const auto& c : cylinders) v = std::fmax(v, peak_speed(c.motion, c.rim()));
+    return v;
   }
 
   bool all_spheres() const {

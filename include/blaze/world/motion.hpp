@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 #include "blaze/core/mat3.hpp"
 #include "blaze/core/quat.hpp"
 
@@ -106,6 +107,25 @@ BLAZE_HD Pose<Real> pose_at(const Motion& m, double t) {
   p.velocity = vec_cast<Real>(du);
   p.active = !(t >= m.remove);
   return p;
+}
+
+// The fastest a point of an object moves (m/s), over `points` of it (its vertices; a cylinder's
+// rim): |omega| times the farthest from the axis, |V|, or 2 pi f A (the ramps only approach these).
+inline double peak_speed(const Motion& m, const std::vector<Vec3<double>>& points) {
+  switch (m.kind) {
+    case MotionKind::rotation: {
+      double reach = 0;
+      for (const auto& x : points) {
+        const Vec3<double> r = x - m.point;
+        reach = std::fmax(reach, norm(r - m.axis * dot(r, m.axis)));
+      }
+      return std::fabs(m.omega) * reach;
+    }
+    case MotionKind::translation: return norm(m.velocity);
+    case MotionKind::vibration: return 2 * 3.14159265358979323846 * m.frequency * m.amplitude;
+    case MotionKind::none: return 0;
+  }
+  return 0;
 }
 
 }  // namespace blaze
