@@ -23,6 +23,7 @@
 #include "blaze/io/manifest.hpp"
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
+#include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
@@ -188,10 +189,7 @@ int main(int argc, char** argv) try {
   if (!s.all_spheres()) throw SceneError(path + ": the hopper study takes spheres only");
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the hopper study runs in double: precision = \"double\"");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
-  const bool gpu = std::string(DefaultSpace::name) == "gpu";
-  const double host_free = available_memory(Host{});
-  check_run_fits(s, run_size(s, gpu), gpu, host_free > 0 ? host_free : INFINITY, gpu ? available_memory(DefaultSpace{}) : 0,
-                 host_threads());
+  check_run_fits_here(s);
   return s.law == LawKind::linear ? run<LinearLaw<Real>>(s, overrides) : run<HertzLaw<Real>>(s, overrides);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());

@@ -118,10 +118,7 @@ int main(int argc, char** argv) try {
   if (s.tangential != TangentialKind::history_free || s.rolling != RollingKind::none)
     throw SceneError(path + ": the mill study runs the history-free laws for now (tangential = \"history_free\", rolling = \"none\")");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
-  const bool gpu = std::string(DefaultSpace::name) == "gpu";
-  const double host_free = available_memory(Host{});
-  check_run_fits(s, run_size(s, gpu), gpu, host_free > 0 ? host_free : INFINITY, gpu ? available_memory(DefaultSpace{}) : 0,
-                 host_threads());
+  check_run_fits_here(s);
   return s.law == LawKind::linear ? run<LinearLaw<Real>>(s) : run<HertzLaw<Real>>(s);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());

@@ -59,6 +59,7 @@
 #include "blaze/io/manifest.hpp"
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
+#include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/sim/repose_angle.hpp"
@@ -265,10 +266,7 @@ int main(int argc, char** argv) try {
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   if (!export_dir.empty()) return export_liggghts(g, export_dir);
   if (!dump.empty()) return measure_dump(s, g, dump, dump_wall);
-  const bool gpu = std::string(DefaultSpace::name) == "gpu";
-  const double host_free = available_memory(Host{});
-  check_run_fits(s, run_size(s, gpu), gpu, host_free > 0 ? host_free : INFINITY, gpu ? available_memory(DefaultSpace{}) : 0,
-                 host_threads());
+  check_run_fits_here(s);
   return run(s, g, overrides);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());

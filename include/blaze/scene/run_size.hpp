@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include "blaze/exec/device_info.hpp"
 #include "blaze/scene/scene.hpp"
 
 namespace blaze {
@@ -162,6 +163,15 @@ inline void check_run_fits(const Scene& s, const RunSize& z, bool gpu, double ho
                   z.particles * z.steps / seconds, kMaxWallTime / 86400);
     throw SceneError(s.place(s.steps_per_contact > 0 ? "simulation.steps_per_contact" : "simulation.dt") + msg);
   }
+}
+
+// check_run_fits for this build's backend (DefaultSpace) and the memory and threads free now:
+// what a study checks before it builds its run.
+inline void check_run_fits_here(const Scene& s) {
+  const bool gpu = std::string(DefaultSpace::name) == "gpu";
+  const double host_free = available_memory(Host{});
+  check_run_fits(s, run_size(s, gpu), gpu, host_free > 0 ? host_free : INFINITY, gpu ? available_memory(DefaultSpace{}) : 0,
+                 host_threads());
 }
 
 }  // namespace blaze
