@@ -73,9 +73,31 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
   }
 }
 
+// The power of a contact's force F and moment M (on i about the contact point; j gets -F, -M) on
+// both bodies, at arms r_i = p - x_i and r_j = p - x_j (blaze/particles/energy_ledger.hpp):
+//   P = F . (v_i - v_j) + (r_i x F + M) . w_i - (r_j x F + M) . w_j              [W]
+// For a contact with a patch, M is the patch's moment, and P is the sum of F_k . v_rel(p_k) over
+// its points (the velocities of rigid bodies are affine in the point). -P dt is what the
+// contact took out of the motion in a step.
+template <class Real>
+BLAZE_HD_INLINE Real contact_power(const Vec3<Real>& f, const Vec3<Real>& m, const Vec3<Real>& v_i, const Vec3<Real>& w_i,
+                                   const Vec3<Real>& r_i, const Vec3<Real>& v_j, const Vec3<Real>& w_j,
+                                   const Vec3<Real>& r_j) {
+  return dot(f, v_i - v_j) + dot(cross(r_i, f) + m, w_i) - dot(cross(r_j, f) + m, w_j);
+}
+
 // Does a contact's force come with a moment (a patch, or a law with rolling resistance)?
 template <class Law, class Geometry>
 inline constexpr bool has_moment_v = is_patch_geometry_v<Geometry> || Law::kRolling;
+
+// contact_power of the force c that pair_force returned for i (side a) and j (body bj).
+template <class Features, bool Moment, class Real, class Body, class Geometry>
+BLAZE_HD_INLINE Real pair_power(const ParticleView<Real>& p, const PairSide<Real, Body>& a, Index j, const Body& bj,
+                                const Geometry& g, const ContactForce<Real>& c) {
+  const Vec3<Real> zero{0, 0, 0};
+  const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : zero;
+  return contact_power(c.force, Moment ? c.moment : zero, a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
+}
 
 // Particle i's sums over its contacts, added in list order and stored once: force, torque
 // (Features::rotation), deepest overlap / radius (Features::monitor, kept as the maximum with

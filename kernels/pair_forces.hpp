@@ -54,6 +54,7 @@ struct PairForces {
 
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
+    Real taken = 0;  // J, -P dt over the pairs i evaluates (energy accounts: the lower index books them)
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
@@ -74,7 +75,9 @@ struct PairForces {
       slots.set(slots.force, s, c.force);
       if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>> && Features::rotation) slots.set(slots.moment, s, c.moment);
       if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
+      if (p.ledger.on()) taken -= pair_power<Features, has_moment_v<Law, std::decay_t<decltype(g)>>>(p, a, j, bj, g, c) * dt;
     }
+    if (p.ledger.on()) p.ledger.column[kLedgerPair][i] += taken;
   }
 };
 

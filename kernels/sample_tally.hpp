@@ -8,8 +8,9 @@
 //   worst, worst_index, over              deepest overlap / radius since the last reset, its
 //                                         particle (the lowest index on a tie), and the count
 //                                         above `threshold` (Features::monitor)
-//   drive_work                            work done by moving world objects since the last
-//                                         reset (a moving world)                            [J]
+//   ledger                                the particle's energy accounts since the last reset
+//                                         (drive work, dissipation by contact class;
+//                                         blaze/particles/energy_ledger.hpp), when kept     [J]
 // reduce_in_order (exec/primitives.hpp) folds them deterministically.
 #pragma once
 #include "blaze/exec/launch.hpp"
@@ -20,14 +21,16 @@ namespace blaze {
 
 struct SampleTally {
   double translational = 0, rotational = 0, potential = 0, mass = 0;  // J, J, J, kg
-  double pair_energy = 0, wall_energy = 0, drive_work = 0;            // J
+  double pair_energy = 0, wall_energy = 0;                            // J
+  double ledger[kLedgerColumns] = {};                                  // J
   long long wall_contacts = 0, vertex_face = 0, edge_edge = 0, over = 0;
   double worst = 0;        // overlap / radius
   Index worst_index = -1;  // memory index of the deepest (-1: none above 0)
 
   BLAZE_HD void combine(const SampleTally& o) {
     translational += o.translational, rotational += o.rotational, potential += o.potential, mass += o.mass;
-    pair_energy += o.pair_energy, wall_energy += o.wall_energy, drive_work += o.drive_work;
+    pair_energy += o.pair_energy, wall_energy += o.wall_energy;
+    for (int c = 0; c < kLedgerColumns; ++c) ledger[c] += o.ledger[c];
     wall_contacts += o.wall_contacts, vertex_face += o.vertex_face, edge_edge += o.edge_edge, over += o.over;
     if (o.worst > worst || (o.worst == worst && o.worst_index >= 0 && (worst_index < 0 || o.worst_index < worst_index)))
       worst = o.worst, worst_index = o.worst_index;
@@ -57,7 +60,8 @@ struct ParticleTally {
     t.mass = static_cast<double>(m);
     if (pair_energy) t.pair_energy = pair_energy[i], t.wall_energy = wall_energy[i], t.wall_contacts = wall_contacts[i];
     if (vertex_face) t.vertex_face = vertex_face[i], t.edge_edge = edge_edge[i];
-    if (p.drive_work) t.drive_work = static_cast<double>(p.drive_work[i]);
+    if (p.ledger.on())
+      for (int c = 0; c < kLedgerColumns; ++c) t.ledger[c] = static_cast<double>(p.ledger.column[c][i]);
     if (p.penetration) {
       const double d = static_cast<double>(p.penetration[i]);
       t.over = d > threshold;

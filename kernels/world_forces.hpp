@@ -2,12 +2,14 @@
 // torque. Walls have infinite mass: m_eff = m_i. A moving object (blaze/world/motion.hpp; its
 // pose placed by the move-world phase) enters the contact through its velocity at the contact
 // point, v_w = omega x (x - o) + u', in the relative velocity (and omega in the rolling laws'
-// relative spin), and does the work F . v_w dt on the particle per step, which is added to the
-// particle's drive-work account (ParticleView::drive_work) for the energy balance; a removed
-// object is skipped. A contact with a patch (contact_patch.hpp) adds the patch's moment about the
-// contact point to the torque. A law with history keeps each wall contact's state in a slot of
-// the particle keyed by the object (contact_history.hpp): found or claimed when touching, freed
-// when the contact opens.
+// relative spin). A removed object is skipped. A contact with a patch (contact_patch.hpp) adds the
+// patch's moment about the contact point to the torque. A law with history keeps each wall
+// contact's state in a slot of the particle keyed by the object (contact_history.hpp): found or
+// claimed when touching, freed when the contact opens.
+// When the run keeps energy accounts (blaze/particles/energy_ledger.hpp), each contact books
+//   the drive's work    (F . v_w(p) + M . omega) dt               to the drive column, and
+//   the dissipation     -P dt, P = contact_power(F, M, v_i, w_i, r_i, v_w(p), omega, 0)
+//                       (contact_pair.hpp)                      to the object's class column.
 #pragma once
 #include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
@@ -44,7 +46,8 @@ struct WorldForces {
     Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
     Real deepest = 0;
     unsigned seen = 0;  // slots of objects touched this step
-    Real work = 0;      // J, done this step by moving objects on i
+    Real work = 0;      // J, done this step by moving objects on i (energy accounts)
+    Real taken[kContactClasses] = {};  // J, -P dt by the objects' contact class (energy accounts)
     // Object w (polygons first, then cylinders: the world's object index).
     const auto apply = [&](const auto& g, int material, int w) {
       if (!g.touching) return;
@@ -81,10 +84,16 @@ struct WorldForces {
       if constexpr (Law::kHistory)
         if (h >= 0) history.store(h, i, state);
       f += c.force;
-      if (pose) work += dot(c.force, pose->velocity_at(g.point)) * dt;
+      constexpr bool kMoment = has_moment_v<Law, std::decay_t<decltype(g)>>;
       if constexpr (Features::rotation) {
-        if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>>) t += cross(ri, c.force) + c.moment;
+        if constexpr (kMoment) t += cross(ri, c.force) + c.moment;
         else t += cross(ri, c.force);
+      }
+      if (p.ledger.on()) {
+        const Vec3<Real> mc = kMoment && Features::rotation ? c.moment : zero;
+        const Vec3<Real> v_wall = pose ? pose->velocity_at(g.point) : zero;
+        work += (dot(c.force, v_wall) + dot(mc, w_wall)) * dt;
+        taken[static_cast<int>(world.class_of(w))] -= contact_power(c.force, mc, vi, wi, ri, v_wall, w_wall, zero) * dt;
       }
     };
     int w = 0;
@@ -94,7 +103,10 @@ struct WorldForces {
       if (!world.pose || world.pose[w].active) apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material, w);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
-    if (p.drive_work && dt > Real(0)) p.drive_work[i] += work;
+    if (p.ledger.on() && dt > Real(0)) {  // (dt = 0: the forces before the first step, no work)
+      p.ledger.column[kLedgerDrive][i] += work;
+      for (int c = 0; c < kContactClasses; ++c) p.ledger.column[kLedgerWalls + c][i] += taken[c];
+    }
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
     if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);

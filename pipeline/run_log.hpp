@@ -8,6 +8,13 @@
 // total_J = kinetic_translational_J + kinetic_rotational_J + potential_J + elastic_J = E(t).
 // drive_work_J = W(t): the work moving world objects did on the particles so far (F . v_wall dt
 //   per contact and step, kernels/world_forces.hpp; zero in a static world).
+// When the run keeps energy accounts (a world that moves, or [output] energy_by_class; the log is
+// made with `ledger`), five more columns follow: the energy taken out so far by particle-particle
+// contacts and by the contacts with each class of world object (blaze/particles/energy_ledger.hpp):
+//   dissipated_pair_J, dissipated_wall_J, dissipated_shell_J, dissipated_lifter_J, dissipated_end_plate_J
+// Their sum is the energy method's dissipation, measured contact by contact; it differs from
+// dissipated_J (the balance's residual) by the elastic energy the contacts hold and the
+// integrator's error in the work (verification/test_energy_ledger.cpp).
 // dissipated_J = E(0) + W(t) - E(t) - E_removed: what the dashpots, friction and drag took out,
 //   so that E(0) + W(t) = E(t) + dissipated_J + E_removed     (energy in = energy out + stored)
 // holds in every row; an elastic, frictionless run keeps dissipated_J at zero up to the
@@ -53,11 +60,16 @@ class RunLog {
   // keep_until >= 0 (a restarted run): the existing file's rows up to that time stay.
   // `height`: the domain's extent along gravity (m), for the energy guard's scale.
   RunLog(const std::string& path, double penetration_limit, double energy_gain_limit, const Vec3<Real>& gravity,
-         double height, double keep_until = -1)
-      : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height) {
+         double height, double keep_until = -1, bool ledger = false)
+      : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height), ledger_(ledger) {
     std::string kept = "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,elastic_J,total_J,"
                        "dissipated_J,contacts_vertex_face,contacts_edge_edge,contacts_wall,max_penetration_ratio,"
-                       "penetration_over_limit,worst_penetration_id,drive_work_J\n";
+                       "penetration_over_limit,worst_penetration_id,drive_work_J";
+    if (ledger_) {
+      kept += ",dissipated_pair_J";
+      for (int c = 0; c < kContactClasses; ++c) kept += std::string(",dissipated_") + contact_class_name(c) + "_J";
+    }
+    kept += "\n";
     if (keep_until >= 0) {
       std::ifstream in(path);
       std::string line;
@@ -76,14 +88,24 @@ class RunLog {
       throw std::runtime_error("checkpoint: no energy bookkeeping in its run text");
     const auto w = saved.find(" work=");  // absent before moving walls: none was done
     work_ = w == std::string::npos ? 0.0 : std::stod(saved.substr(w + 6));
+    const auto d = saved.find(" dissipated=");  // absent before the accounts: none kept
+    if (d != std::string::npos) {
+      std::size_t at = d + 12;
+      for (double& x : dissipated_) {
+        std::size_t used = 0;
+        x = std::stod(saved.substr(at), &used);
+        at += used + 1;  // past the comma
+      }
+    }
     if (saved.find(kEnergyParts) == std::string::npos)
       throw std::runtime_error("checkpoint: its E(0) leaves out the elastic energy of the contacts (written before "
                                "elastic_J was part of total_J); rerun from the start");
     started_ = true;
   }
   std::string save() const {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "e0=%.17g scale=%.17g work=%.17g %s", e0_, scale_, work_, kEnergyParts);
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "e0=%.17g scale=%.17g work=%.17g %s dissipated=%.17g,%.17g,%.17g,%.17g,%.17g", e0_, scale_,
+                  work_, kEnergyParts, dissipated_[0], dissipated_[1], dissipated_[2], dissipated_[3], dissipated_[4]);
     return buf;
   }
 
@@ -101,6 +123,8 @@ class RunLog {
     }
     const double removed_energy = sim.removed_energy();
     work_ += smp.drive_work;
+    dissipated_[0] += smp.dissipated_pair;
+    for (int c = 0; c < kContactClasses; ++c) dissipated_[1 + c] += smp.dissipated_walls[c];
     const double gain = total + removed_energy - work_ - e0_;
     // the balance's error grows with the energy that went through it: moving walls add |W|
     const double scale = scale_ + std::abs(work_);
@@ -119,7 +143,10 @@ class RunLog {
     out_ << sim.time() << ',' << sim.size() << ',' << sim.removed_count() << ',' << e.translational << ','
          << e.rotational << ',' << e.potential << ',' << stored.total() << ',' << total << ','
          << e0_ + work_ - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
-         << ',' << pen.over << ',' << pen.worst_id << ',' << work_ << '\n';
+         << ',' << pen.over << ',' << pen.worst_id << ',' << work_;
+    if (ledger_)
+      for (double d : dissipated_) out_ << ',' << d;
+    out_ << '\n';
     if (pen.over > 0 && warnings_++ < kMaxWarnings)
       std::printf("warning: t = %.6g s: %ld particles exceeded %.3g%% penetration since the last sample; deepest "
                   "%.3g%% (particle id %d)%s\n",
@@ -150,6 +177,9 @@ class RunLog {
   double height_;
   double e0_ = 0, scale_ = 0, worst_ = 0, max_gain_ = -1e300;
   double work_ = 0;  // J, W(t)
+  bool ledger_;
+  double dissipated_[1 + kContactClasses] = {};  // J so far: pairs, then each world contact class
+  static_assert(1 + kContactClasses == 5, "save() writes five accounts");
   bool started_ = false;
   long warnings_ = 0, over_samples_ = 0;
   Index reported_removed_ = 0;

@@ -46,6 +46,9 @@ struct SimulationParams {
   Real skin;            // m, neighbour-list margin; 0 rebuilds whenever anything moves
   Real drag = 0;        // kg/m, quadratic air drag F = -drag |v| v on every particle (0: none)
   PairEvaluation pairs = PairEvaluation::both_sides;  // see PairEvaluation
+  // Keep the energy accounts (blaze/particles/energy_ledger.hpp: the drive's work and the
+  // dissipation by contact class) even in a still world; a world that moves keeps them anyway.
+  bool energy_ledger = false;
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
@@ -105,7 +108,7 @@ class Simulation {
     check_params(params);
     check_materials(laws, world, particles);
     reside_shape();
-    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic());  // checks the lengths
+    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic() || params.energy_ledger);  // checks the lengths
     check_finite(particles, 0);
     world_.upload(world, 0, static_cast<double>(params.dt));
     initial_count_ = store_.size();
@@ -133,7 +136,7 @@ class Simulation {
     store_.restore(snap.store);
     steps_ = snap.steps;
     world_.upload(world, steps_, static_cast<double>(params.dt));
-    if (world.dynamic()) store_.keep_drive_work();
+    if (world.dynamic() || params.energy_ledger) store_.keep_ledger();
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;
     removed_mass_ = snap.removed_mass;
@@ -216,7 +219,16 @@ class Simulation {
     ContactEnergy stored;   // J, the open contacts' elastic energy; world contacts
     long vertex_face = 0, edge_edge = 0;  // particle-particle contacts by kind, each pair once
     PenetrationReport penetration;
-    double drive_work = 0;  // J, done by moving world objects on the particles since the last sample
+    // The energy accounts since the last sample (blaze/particles/energy_ledger.hpp), when kept:
+    bool ledger = false;
+    double drive_work = 0;       // J, done by moving world objects on the particles
+    double dissipated_pair = 0;  // J, taken out by particle-particle contacts
+    double dissipated_walls[kContactClasses] = {};  // J, by particle-world contacts, by the object's class
+    double dissipated() const {
+      double d = dissipated_pair;
+      for (double w : dissipated_walls) d += w;
+      return d;
+    }
   };
   Sample sample(double penetration_limit) {
     const SampleTally t = tally(true, penetration_limit);
@@ -227,13 +239,18 @@ class Simulation {
     if (stats_vertex_face_.size() >= static_cast<std::size_t>(store_.size()))
       s.vertex_face = static_cast<long>(t.vertex_face / 2), s.edge_edge = static_cast<long>(t.edge_edge / 2);
     s.penetration = penetration(t);
-    s.drive_work = t.drive_work;
+    s.ledger = store_.keeps_ledger();
+    s.drive_work = t.ledger[kLedgerDrive];
+    s.dissipated_pair = t.ledger[kLedgerPair];
+    for (int c = 0; c < kContactClasses; ++c) s.dissipated_walls[c] = t.ledger[kLedgerWalls + c];
     store_.reset_penetration();
-    store_.reset_drive_work();
+    store_.reset_ledger();
     return s;
   }
   // The world moves or loses objects at set times (blaze/world/motion.hpp).
   bool world_moves() const { return world_.dynamic(); }
+  // The particles keep energy accounts (a world that moves, or SimulationParams::energy_ledger).
+  bool keeps_energy_ledger() const { return store_.keeps_ledger(); }
   // Each object's pose now (a static world: none).
   std::vector<Pose<Real>> world_poses() const { return world_.dynamic() ? world_.poses() : std::vector<Pose<Real>>{}; }
   // A copy of the state kept on the particles' memory space (keep_state()) and read back only

@@ -431,13 +431,15 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
 
 void read_output(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[output]", file,
-           {"directory", "csv_interval", "vtu_interval", "checkpoint_interval", "penetration_warning", "energy_gain_limit"});
+           {"directory", "csv_interval", "vtu_interval", "checkpoint_interval", "penetration_warning", "energy_gain_limit",
+            "energy_by_class"});
   s.output.directory = f.string_or("directory", "data/run", "a directory path (created if missing)");
   s.output.csv_interval = f.number_or("csv_interval", 0, non_negative("s (0: no CSV)"));
   s.output.vtu_interval = f.number_or("vtu_interval", 0, non_negative("s (0: no VTU frames)"));
   s.output.checkpoint_interval = f.number_or("checkpoint_interval", 0, non_negative("s (0: no checkpoints)"));
   s.output.penetration_warning = f.number_or("penetration_warning", 0.05, {0, 1, true, false, "overlap / radius"});
   s.output.energy_gain_limit = f.number_or("energy_gain_limit", 0.05, {0, 1, true, false, "x the energy scale"});
+  s.output.energy_by_class = f.boolean_or("energy_by_class", false);
   f.note(s, "output.", {"csv_interval", "vtu_interval", "checkpoint_interval"});
 }
 
@@ -519,6 +521,15 @@ void read_pairs(const toml::table& root, const std::string& file, Scene& s) {
     p.restitution = f.number("restitution", {0, 1, true, false, "(coefficient of restitution)"});
     p.friction = f.number_or("friction", 0, {0, 100, false, false, "(Coulomb coefficient)"});
     p.tangential_damping = f.number_or("tangential_damping", 0, non_negative("kg/s (K_T of eq. 2.3)"));
+    // Friction without K_T would never act (the viscous branch is K_T |v_t|): the history-free law
+    // then takes the thesis's mill friction, eq. 4.3 (history_free_friction.hpp).
+    if (s.tangential == TangentialKind::history_free && p.friction > 0 && !f.has("tangential_damping")) {
+      p.tangential_rate = std::min(p.friction, 0.5);
+      s.notes.push_back("note: " + f.where_of("friction") + ": " + item_label("pair", k) +
+                        " has friction but no tangential_damping (K_T, kg/s): the history-free friction takes the "
+                        "thesis's eq. 4.3, K_T = " + (p.friction > 0.5 ? std::string("0.5") : std::string("mu")) +
+                        " m*/dt (give tangential_damping for a fixed K_T, 0 for none)");
+    }
     p.tangential_stiffness = f.number_or("tangential_stiffness", 0, up_to(kMaxModulus, "N/m (k_t; default 2/7 of the normal stiffness)"));
     p.rolling_friction = f.number_or("rolling_friction", 0, {0, 1, false, false, "(rolling friction coefficient mu_r)"});
     p.rolling_damping = f.number_or("rolling_damping", 0.3, {0, 10, false, false, "(damping ratio eta_r of the rolling spring)"});
@@ -723,11 +734,24 @@ void note_wall_speed(Scene& s, const std::string& label, const std::string& wher
                       " m/s: its impacts may overlap more than the time step was chosen for");
 }
 
+// An object's `contact_class`: the account its contacts' dissipation is booked under
+// (blaze/particles/energy_ledger.hpp; the mill's objects have theirs).
+ContactClass read_contact_class(Fields& f) {
+  if (!f.has("contact_class")) return ContactClass::wall;
+  const std::string allowed = "one of \"wall\", \"shell\", \"lifter\", \"end_plate\"";
+  const std::string v = f.string("contact_class", allowed);
+  for (int c = 0; c < kContactClasses; ++c)
+    if (v == contact_class_name(c)) return static_cast<ContactClass>(c);
+  f.fail(*f.get("contact_class"), "contact_class", allowed);
+  return ContactClass::wall;
+}
+
 void read_world(const toml::table& root, const std::string& file, Scene& s) {
   const auto materials = material_names(s);
   const auto walls = tables(root, "wall", file);
   for (std::size_t k = 0; k < walls.size(); ++k) {
-    Fields f(*walls[k], item_label("wall", k), file, {"name", "material", "vertices", "rim", "motion", "remove_time"});
+    Fields f(*walls[k], item_label("wall", k), file,
+             {"name", "material", "vertices", "rim", "motion", "remove_time", "contact_class"});
     WallSpec w;
     w.name = f.string_or("name", "", "a non-empty name");
     w.material = lookup(f, "material", materials, "material");
@@ -755,13 +779,14 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
       }
     }
     w.motion = read_motion(f, file, item_label("wall", k), "wall[" + std::to_string(k) + "]", s);
+    w.contact_class = read_contact_class(f);
     note_wall_speed(s, item_label("wall", k), f.where_of("motion"), peak_speed(w.motion, w.vertices));
     s.walls.push_back(w);
   }
   const auto cylinders = tables(root, "cylinder", file);
   for (std::size_t k = 0; k < cylinders.size(); ++k) {
     Fields f(*cylinders[k], item_label("cylinder", k), file,
-             {"material", "origin", "axis", "radius", "length", "motion", "remove_time"});
+             {"material", "origin", "axis", "radius", "length", "motion", "remove_time", "contact_class"});
     CylinderSpec c;
     c.material = lookup(f, "material", materials, "material");
     c.origin = f.vec3("origin", position("m"));
@@ -770,6 +795,7 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
     c.radius = f.number("radius", up_to(kMaxCoordinate, "m"));
     c.length = f.number("length", up_to(kMaxCoordinate, "m"));
     c.motion = read_motion(f, file, item_label("cylinder", k), "cylinder[" + std::to_string(k) + "]", s);
+    c.contact_class = read_contact_class(f);
     note_wall_speed(s, item_label("cylinder", k), f.where_of("motion"), peak_speed(c.motion, c.rim()));
     s.cylinders.push_back(c);
   }
@@ -834,6 +860,7 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
   shell.radius = r;
   shell.length = m.length;
   shell.motion = motion;
+  shell.contact_class = ContactClass::shell;
   s.cylinders.push_back(shell);
   for (const MillWall& w : mill_walls(m)) {
     WallSpec spec;
@@ -842,6 +869,7 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
     spec.vertices = w.vertices;
     spec.rim_edges = w.rim_edges;
     spec.motion = motion;
+    spec.contact_class = w.contact_class;
     s.walls.push_back(spec);
   }
   note_wall_speed(s, "[mill]", f.where_of("diameter"), std::fabs(m.omega) * r);

@@ -143,7 +143,7 @@ int run_scene(const Scene& s, const Options& o) {
                                                               : s.pair_evaluation == PairsKind::once;
   const SimulationParams<Real> prm{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
                                    vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag),
-                                   once ? PairEvaluation::once : PairEvaluation::both_sides};
+                                   once ? PairEvaluation::once : PairEvaluation::both_sides, s.output.energy_by_class};
   const World<Real> world = build_world<Real>(s);
   using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
   // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,
@@ -165,7 +165,7 @@ int run_scene(const Scene& s, const Options& o) {
   const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
   RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
-                   resume_at);
+                   resume_at, sim.keeps_energy_ledger());
   // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
   // it is downloaded only if a guard stops the run.
   sim.keep_state();

@@ -7,11 +7,14 @@
 // contact and step (kernels/world_forces.hpp): this is the torque method, P = omega . sum (r x F)
 // over the drum's contacts, summed in time (for a rigid rotation F . (omega x r) = omega . (r x F)).
 // The mean over the revolutions after [study] skip_revolutions (the charge settles into its
-// profile over the first) is the mill's power. The energy balance E(0) + W = E(t) + dissipated
-// closes each revolution: at steady state the drive's power is what the contacts dissipate (the
-// energy method's total; its split by contact class is still to come). Each revolution also gives
-// the charge's toe and shoulder (include/blaze/sim/charge_profile.hpp: degrees from the bottom of
-// the drum, positive in its direction of rotation).
+// profile over the first) is the mill's power. The energy method measures the same power from the
+// other end: what the contacts took out of the charge's motion per revolution, contact by contact
+// (blaze/particles/energy_ledger.hpp), split by class: ball-ball, ball-shell, ball-lifter,
+// ball-end plate (the thesis's Table 4.7 split). At steady state the two agree (the charge's energy
+// returns each revolution); both go to the CSV with their ratio. Each revolution also gives the
+// charge's toe and shoulder (include/blaze/sim/charge_profile.hpp: degrees from the bottom of
+// the drum, positive in its direction of rotation). Any sphere law of the scene file: the
+// history-free law (the thesis's) or Hertz-Mindlin / the linear spring, with rolling resistance.
 // Writes <output directory>/{power.csv, manifest.txt}; the scene's [output] rows and frames as
 // `blaze run` would are not written (use blaze run for those).
 #include <chrono>
@@ -20,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <type_traits>
 #include "blaze/exec/device_info.hpp"
 #include "blaze/io/console.hpp"
 #include "blaze/io/manifest.hpp"
@@ -37,6 +41,7 @@ namespace {
 
 template <class Law>
 int run(const Scene& s) {
+  static_assert(std::is_same_v<typename Law::real_type, Real>);
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
   if (!s.mill.present || s.mill.omega == 0) throw SceneError(s.path + ": the mill study needs a [mill] that turns");
   const double skip = s.study_value("skip_revolutions", 0, 1000, "revolutions settled before the power is averaged");
@@ -55,17 +60,21 @@ int run(const Scene& s) {
   const std::string dir = s.output.directory;
   std::filesystem::create_directories(dir);
   std::ofstream csv(dir + "/power.csv");
-  csv << "revolution,t_end_s,power_W,kinetic_J,dissipated_J,drive_work_J,balls,toe_deg,shoulder_deg\n";
+  csv << "revolution,t_end_s,power_W,energy_method_W,pair_W,shell_W,lifter_W,end_plate_W,wall_W,kinetic_J,dissipated_J,"
+         "drive_work_J,balls,toe_deg,shoulder_deg\n";
   const auto steps_to = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
   const auto wall0 = std::chrono::steady_clock::now();
   const auto e0_sample = sim.sample(s.output.penetration_warning);  // E(0), the balance's start
   const double e0 = e0_sample.energies.total() + e0_sample.stored.total();
-  double work = 0, work_at = 0, sum = 0, worst = 0;
+  double work = 0, work_at = 0, sum = 0, sum_energy = 0, worst = 0;
+  double by_class[1 + kContactClasses] = {}, class_sum[1 + kContactClasses] = {};  // J: pairs, then the walls' classes
   int averaged = 0, rev = 0;
   for (double t_end = first; t_end <= s.end_time + 1e-12; t_end += period, ++rev) {
     sim.run(steps_to(t_end) - sim.steps());
     const auto smp = sim.sample(s.output.penetration_warning);
     work += smp.drive_work;
+    by_class[0] = smp.dissipated_pair;  // this revolution's (the sample resets the accounts)
+    for (int c = 0; c < kContactClasses; ++c) by_class[1 + c] = smp.dissipated_walls[c];
     const double e = smp.energies.total() + smp.stored.total();
     worst = std::max(worst, smp.penetration.worst);
     if (rev > 0) {
@@ -74,25 +83,46 @@ int run(const Scene& s) {
       // the charge against the shell: a band of 1.5 ball diameters (charge_profile.hpp)
       const ChargeProfile cp = charge_profile(sim.state().position, s.mill.centre, s.mill.axis, 0.5 * s.mill.diameter,
                                               3 * r_max, s.mill.omega > 0 ? 1 : -1);
-      csv << rev << ',' << sim.time() << ',' << power << ',' << smp.energies.kinetic() << ',' << dissipated << ',' << work << ','
-          << sim.size() << ',' << cp.toe_deg << ',' << cp.shoulder_deg << '\n';
-      std::printf("  revolution %3d (t = %6.2f s): %8.2f W, toe %6.1f deg, shoulder %6.1f deg\n", rev, sim.time(), power,
-                  cp.toe_deg, cp.shoulder_deg);
-      if (rev > skip) sum += power, ++averaged;
+      const double energy_method = smp.dissipated() / period;
+      csv << rev << ',' << sim.time() << ',' << power << ',' << energy_method;
+      for (int c : {0, 1 + static_cast<int>(ContactClass::shell), 1 + static_cast<int>(ContactClass::lifter),
+                    1 + static_cast<int>(ContactClass::end_plate), 1 + static_cast<int>(ContactClass::wall)})
+        csv << ',' << by_class[c] / period;
+      csv << ',' << smp.energies.kinetic() << ',' << dissipated << ',' << work << ',' << sim.size() << ',' << cp.toe_deg << ','
+          << cp.shoulder_deg << '\n';
+      std::printf("  revolution %3d (t = %6.2f s): %8.2f W (energy method %8.2f W), toe %6.1f deg, shoulder %6.1f deg\n", rev,
+                  sim.time(), power, energy_method, cp.toe_deg, cp.shoulder_deg);
+      if (rev > skip) {
+        sum += power, sum_energy += energy_method, ++averaged;
+        for (int c = 0; c <= kContactClasses; ++c) class_sum[c] += by_class[c];
+      }
     }
     work_at = work;
   }
   csv.close();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  const double mean = averaged ? sum / averaged : 0;
-  std::printf("power %.2f W (mean of %d revolutions after %g); deepest penetration %.3g%% of the radius; %d balls left; "
-              "wall time %.1f s, %.4g steps/s\n",
-              mean, averaged, skip, 100 * worst, static_cast<int>(sim.size()), wall, static_cast<double>(sim.steps()) / wall);
+  const double mean = averaged ? sum / averaged : 0, mean_energy = averaged ? sum_energy / averaged : 0;
+  double taken = 0;
+  for (double d : class_sum) taken += d;
+  const auto share = [&](int c) { return taken > 0 ? 100 * class_sum[c] / taken : 0.0; };
+  const int shell = 1 + static_cast<int>(ContactClass::shell), lifter = 1 + static_cast<int>(ContactClass::lifter),
+            plate = 1 + static_cast<int>(ContactClass::end_plate), other = 1 + static_cast<int>(ContactClass::wall);
+  std::printf("power %.2f W by the torque method, %.2f W by the energy method (mean of %d revolutions after %g; ratio %.4f)\n"
+              "dissipated: ball-ball %.1f%%, ball-shell %.1f%%, ball-lifter %.1f%%, ball-end plate %.1f%%, other walls %.1f%%\n"
+              "deepest penetration %.3g%% of the radius; %d balls left; wall time %.1f s, %.4g steps/s\n",
+              mean, mean_energy, averaged, skip, mean > 0 ? mean_energy / mean : 0.0, share(0), share(shell), share(lifter),
+              share(plate), share(other), 100 * worst, static_cast<int>(sim.size()), wall,
+              static_cast<double>(sim.steps()) / wall);
   std::map<std::string, std::string> m;
   char b[64];
   const auto num = [&](double v) { return std::snprintf(b, sizeof b, "%.10g", v), std::string(b); };
   m["scene"] = s.path, m["backend"] = DefaultSpace::name, m["device"] = device_name(DefaultSpace{});
-  m["power_W"] = num(mean), m["revolutions_averaged"] = std::to_string(averaged), m["rpm"] = num(s.mill.omega * 60 / (2 * 3.14159265358979323846));
+  m["power_W"] = num(mean), m["energy_method_W"] = num(mean_energy);
+  m["share_pair"] = num(share(0)), m["share_shell"] = num(share(shell)), m["share_lifter"] = num(share(lifter));
+  m["share_end_plate"] = num(share(plate)), m["share_other_walls"] = num(share(other));
+  m["law"] = std::string(to_string(s.law)) + (s.tangential == TangentialKind::history_free ? " history-free" : " + spring") +
+             (s.rolling == RollingKind::none ? "" : " + rolling");
+  m["revolutions_averaged"] = std::to_string(averaged), m["rpm"] = num(s.mill.omega * 60 / (2 * 3.14159265358979323846));
   m["balls"] = std::to_string(balls.size()), m["dt_s"] = num(s.dt), m["wall_time_s"] = num(wall);
   m["steps_per_s"] = num(static_cast<double>(sim.steps()) / wall);
   write_manifest(dir + "/manifest.txt", m);
@@ -115,11 +145,12 @@ int main(int argc, char** argv) try {
   const Scene s = load_scene(path, overrides);
   if (!s.all_spheres()) throw SceneError(path + ": the mill study takes spheres only");
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the mill study runs in double: precision = \"double\"");
-  if (s.tangential != TangentialKind::history_free || s.rolling != RollingKind::none)
-    throw SceneError(path + ": the mill study runs the history-free laws for now (tangential = \"history_free\", rolling = \"none\")");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   check_run_fits_here(s);
-  return s.law == LawKind::linear ? run<LinearLaw<Real>>(s) : run<HertzLaw<Real>>(s);
+  const bool spring = s.tangential != TangentialKind::history_free, linear = s.law == LawKind::linear;
+  if (s.rolling != RollingKind::none) return linear ? run<LinearSpringRollingLaw<Real>>(s) : run<HertzMindlinRollingLaw<Real>>(s);
+  if (linear) return spring ? run<LinearSpringLaw<Real>>(s) : run<LinearLaw<Real>>(s);
+  return spring ? run<HertzMindlinLaw<Real>>(s) : run<HertzLaw<Real>>(s);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());
   return 1;

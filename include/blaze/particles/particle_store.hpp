@@ -3,6 +3,7 @@
 #include <cstdint>
 #include "blaze/exec/buffer.hpp"
 #include "blaze/exec/launch.hpp"
+#include "blaze/particles/energy_ledger.hpp"
 #include "blaze/particles/particle_state.hpp"
 #include "blaze/particles/soa.hpp"
 
@@ -24,9 +25,9 @@ struct ParticleView {
   // Deepest overlap / radius of each particle's contacts since the last reset (Features::monitor);
   // null otherwise.
   Real* penetration;
-  // Work done on each particle by moving world objects since the last reset (J; a world that
-  // moves, kernels/world_forces.hpp); null otherwise.
-  Real* drive_work;
+  // The particle's energy accounts since the last reset (J: the moving walls' work, the energy
+  // its contacts dissipated by class; energy_ledger.hpp): a world that moves, or when asked.
+  EnergyLedger<Real> ledger;
 };
 
 template <class T>
@@ -53,8 +54,8 @@ template <class Real, class Space>
 class ParticleStore {
  public:
   static constexpr std::size_t kRadiusField = StoreSnapshot<Real>::kRadiusField;
-  // drive_work: keep each particle's account of the work moving walls do on it.
-  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false, bool drive_work = false) {
+  // ledger: keep each particle's energy accounts (energy_ledger.hpp).
+  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false, bool ledger = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
     std::vector<Real> inv_m(n_), inv_i(n_);
@@ -84,7 +85,7 @@ class ParticleStore {
     from_host(type_, s.type);
     from_host(id_, s.id);
     from_host(penetration_, std::vector<Real>(monitor ? n_ : 0, Real(0)));
-    from_host(drive_work_, std::vector<Real>(drive_work ? n_ : 0, Real(0)));
+    for (auto& c : ledger_) from_host(c, std::vector<Real>(ledger ? n_ : 0, Real(0)));
     scratch_real_.resize(n_);
   }
 
@@ -117,20 +118,24 @@ class ParticleStore {
   void reset_penetration() {
     if (penetration_.size()) for_each(Space{}, n_, Fill<Real>{penetration_.data(), Real(0)});
   }
-  void reset_drive_work() {
-    if (drive_work_.size()) for_each(Space{}, n_, Fill<Real>{drive_work_.data(), Real(0)});
+  void reset_ledger() {
+    for (auto& c : ledger_)
+      if (c.size()) for_each(Space{}, n_, Fill<Real>{c.data(), Real(0)});
   }
-  // A restored run whose world moves but whose checkpoint had no account (all zero from here).
-  void keep_drive_work() {
-    if (drive_work_.size() < static_cast<std::size_t>(n_)) from_host(drive_work_, std::vector<Real>(n_, Real(0)));
+  // A restored run that keeps the accounts but whose checkpoint had none, or only the drive's
+  // (zero from here).
+  void keep_ledger() {
+    for (auto& c : ledger_)
+      if (c.size() < static_cast<std::size_t>(n_)) from_host(c, std::vector<Real>(n_, Real(0)));
   }
+  bool keeps_ledger() const { return ledger_[0].size() > 0; }
 
   ParticleView<Real> view() {
     return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
             field(torque_), field(acceleration_prev_), field(torque_prev_),
             {orientation_[0].data(), orientation_[1].data(), orientation_[2].data(), orientation_[3].data()},
             radius_.data(), inv_mass_.data(), inv_inertia_.data(), material_.data(), type_.data(), id_.data(),
-            penetration_.size() ? penetration_.data() : nullptr, drive_work_.size() ? drive_work_.data() : nullptr};
+            penetration_.size() ? penetration_.data() : nullptr, ledger_view()};
   }
 
   using Snapshot = StoreSnapshot<Real>;
@@ -144,11 +149,13 @@ class ParticleStore {
   }
   void restore(const Snapshot& s) {
     const auto fields = real_fields();
-    // a snapshot from before the drive-work account (its last field) restores without one
-    if (s.reals.size() != fields.size() && s.reals.size() + 1 != fields.size())
+    // the energy accounts are the last fields: a snapshot from before the dissipation columns
+    // holds only the drive's, one from before moving walls none
+    const std::size_t ledger_at = fields.size() - kLedgerColumns;
+    if (s.reals.size() != fields.size() && s.reals.size() != ledger_at + 1 && s.reals.size() != ledger_at)
       throw std::invalid_argument("particle snapshot: wrong number of fields");
     n_ = static_cast<Index>(s.id.size());
-    drive_work_.resize(0);
+    for (auto& c : ledger_) c.resize(0);
     for (std::size_t k = 0; k < s.reals.size(); ++k) {
       if (!s.reals[k].empty() && s.reals[k].size() != s.id.size())
         throw std::invalid_argument("particle snapshot: field " + std::to_string(k) + " has the wrong length");
@@ -200,7 +207,8 @@ class ParticleStore {
     permute_one(type_, scratch_u8_, perm);
     permute_one(id_, scratch_index_, perm);
     if (penetration_.size()) permute_one(penetration_, scratch_real_, perm);
-    if (drive_work_.size()) permute_one(drive_work_, scratch_real_, perm);
+    for (auto& c : ledger_)
+      if (c.size()) permute_one(c, scratch_real_, perm);
   }
 
   // Bytes held per particle (for benchmarks).
@@ -209,8 +217,8 @@ class ParticleStore {
     for (const auto* f : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
       for (const auto& c : *f) b += c.size() * sizeof(Real);
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
-    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size() + drive_work_.size()) *
-         sizeof(Real);
+    b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size()) * sizeof(Real);
+    for (const auto& c : ledger_) b += c.size() * sizeof(Real);
     b += material_.size() + type_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
     return b;
   }
@@ -218,6 +226,11 @@ class ParticleStore {
  private:
   using Field3 = Buffer<Real, Space>[3];
 
+  EnergyLedger<Real> ledger_view() {
+    EnergyLedger<Real> l;
+    for (int c = 0; c < kLedgerColumns; ++c) l.column[c] = ledger_[c].size() ? ledger_[c].data() : nullptr;
+    return l;
+  }
   static Vec3Field<Real> field(Field3& f) { return {f[0].data(), f[1].data(), f[2].data()}; }
   static void resize3(Field3& f, Index n) {
     for (auto& c : f) c.resize(n);
@@ -242,7 +255,8 @@ class ParticleStore {
     for (auto* v : {&position_, &velocity_, &angular_velocity_, &force_, &torque_, &acceleration_prev_, &torque_prev_})
       for (auto& c : *v) f.push_back(&c);
     for (auto& c : orientation_) f.push_back(&c);
-    for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_, &drive_work_}) f.push_back(c);
+    for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_}) f.push_back(c);
+    for (auto& c : ledger_) f.push_back(&c);  // last: older snapshots lack some (restore())
     if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
     return f;
   }
@@ -266,7 +280,7 @@ class ParticleStore {
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
   Buffer<Real, Space> penetration_;  // Features::monitor only
-  Buffer<Real, Space> drive_work_;   // a moving world only
+  Buffer<Real, Space> ledger_[kLedgerColumns];  // energy_ledger.hpp; a moving world, or when asked
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;

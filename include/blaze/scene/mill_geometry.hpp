@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "blaze/particles/energy_ledger.hpp"
 #include "blaze/world/motion.hpp"
 #include "blaze/world/planar_polygon.hpp"
 
@@ -51,6 +52,7 @@ struct MillWall {
   std::vector<Vec3<double>> vertices;
   std::uint32_t rim_edges;
   std::string name;
+  ContactClass contact_class;  // its dissipation's account (energy_ledger.hpp)
 };
 
 namespace mill_detail {
@@ -65,7 +67,7 @@ inline MillWall face(std::vector<Vec3<double>> v, const Vec3<double>& outward, c
   const Vec3<double> normal = cross(v[1] - v[0], v[2] - v[1]);
   if (dot(normal, outward) < 0)
     for (int k = 0; k < n; ++k) order[k] = n - 1 - k;
-  MillWall w{{}, 0u, name};
+  MillWall w{{}, 0u, name, name == "lifter" ? ContactClass::lifter : name == "end plate" ? ContactClass::end_plate : ContactClass::wall};
   for (int k = 0; k < n; ++k) w.vertices.push_back(v[order[k]]);
   for (int k = 0; k < n; ++k) {
     const int a = order[k], b = order[(k + 1) % n];

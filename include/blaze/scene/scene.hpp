@@ -59,6 +59,9 @@ struct PairSpec {
   double restitution = 1;         // -, (0, 1]
   double friction = 0;            // -, Coulomb mu >= 0
   double tangential_damping = 0;  // kg/s, K_T of eq. 2.3 (history-free law)
+  // -, K_T grows by rate m*/dt (history_free_friction.hpp; the thesis's eq. 4.3): min(mu, 0.5) when
+  // a history-free pair has friction but no tangential_damping, 0 otherwise
+  double tangential_rate = 0;
   double tangential_stiffness = 0;  // N/m, linear_spring k_t (0: 2/7 of the normal stiffness)
   double rolling_friction = 0;      // -, mu_r (rolling resistance)
   double rolling_damping = 0.3;     // -, eta_r (epsd)
@@ -106,12 +109,14 @@ struct WallSpec {  // convex planar polygon; the normal follows the right-hand r
   std::vector<Vec3<double>> vertices;  // m
   std::uint32_t rim_edges = 0xffffffffu;  // bit k: edge k -> k+1 has rim contact
   Motion motion;  // [wall.motion] and remove_time (blaze/world/motion.hpp); none by default
+  ContactClass contact_class = ContactClass::wall;  // its dissipation's account (energy_ledger.hpp)
 };
 struct CylinderSpec {  // drum: particles inside, contact on the inner surface
   int material = 0;
   Vec3<double> origin, axis;  // m, centre of the first end; direction (any length)
   double radius = 0, length = 0;
   Motion motion;
+  ContactClass contact_class = ContactClass::wall;
   // Points on the rims of its two ends (the farthest from any axis through it), for peak_speed.
   std::vector<Vec3<double>> rim() const {
     const Vec3<double> u = axis * (1 / norm(axis));
@@ -136,6 +141,9 @@ struct OutputSpec {
   // the largest accepted step (omega dt <= 0.4: (omega dt)^2 / 4 = 4% of the colliding particles'
   // energy); an unstable step grows geometrically and crosses any such limit within a few steps.
   double energy_gain_limit = 0.05;
+  // Keep the energy dissipated by contact class (pairs, each class of wall) in timeseries.csv even
+  // when nothing moves (blaze/particles/energy_ledger.hpp); a world that moves keeps it anyway.
+  bool energy_by_class = false;
 };
 
 // A value of the scene's [study] table: numbers a study driver reads by name (study_value).

@@ -46,7 +46,7 @@ PairTable<Law> build_laws(const Scene& s) {
     }
     Tangential tangential;
     if constexpr (std::is_same_v<Tangential, HistoryFreeFriction<Real>>) {
-      tangential = HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping);
+      tangential = HistoryFreeFriction<Real>::make(p.friction, p.tangential_damping, p.tangential_rate);
     } else if constexpr (linear) {
       const double kt = p.tangential_stiffness > 0 ? p.tangential_stiffness : 2.0 / 7.0 * kn;
       tangential = TangentialSpring<Real>::linear(p.friction, kt, static_cast<double>(normal.beta));
@@ -93,6 +93,14 @@ World<Real> build_world(const Scene& s) {
   if (dynamic) {
     for (const auto& p : s.walls) w.motions.push_back(p.motion);
     for (const auto& c : s.cylinders) w.motions.push_back(c.motion);
+  }
+  // contact classes only where some object is not a plain wall
+  bool classed = false;
+  for (const auto& p : s.walls) classed = classed || p.contact_class != ContactClass::wall;
+  for (const auto& c : s.cylinders) classed = classed || c.contact_class != ContactClass::wall;
+  if (classed) {
+    for (const auto& p : s.walls) w.classes.push_back(p.contact_class);
+    for (const auto& c : s.cylinders) w.classes.push_back(c.contact_class);
   }
   return w;
 }

@@ -90,6 +90,7 @@ inline SceneIdentity scene_identity(const Scene& s) {
     add(p + "restitution", num(q.restitution));
     add(p + "friction", num(q.friction));
     add(p + "tangential_damping", num(q.tangential_damping));
+    if (q.tangential_rate > 0) add(p + "tangential_rate", num(q.tangential_rate));
     add(p + "tangential_stiffness", num(q.tangential_stiffness));
     add(p + "rolling_friction", num(q.rolling_friction));
     add(p + "rolling_damping", num(q.rolling_damping));

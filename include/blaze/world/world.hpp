@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "blaze/exec/buffer.hpp"
+#include "blaze/particles/energy_ledger.hpp"
 #include "blaze/world/cylinder.hpp"
 #include "blaze/world/motion.hpp"
 #include "blaze/world/planar_polygon.hpp"
@@ -22,6 +23,9 @@ struct World {
   std::vector<Cylinder<Real>> cylinders;
   // Per object (polygons first, then cylinders: the world's object index); empty: all static.
   std::vector<Motion> motions;
+  // Per object, the contact class its dissipation is booked under (energy_ledger.hpp); empty:
+  // all plain walls.
+  std::vector<ContactClass> classes;
   bool empty() const { return polygons.empty() && cylinders.empty(); }
   int object_count() const { return static_cast<int>(polygons.size() + cylinders.size()); }
   // Any object moves or is removed at some time.
@@ -34,6 +38,14 @@ struct World {
     if (object < 0 || object >= object_count()) throw std::out_of_range("world: no object " + std::to_string(object));
     motions.resize(static_cast<std::size_t>(object_count()));
     motions[static_cast<std::size_t>(object)] = m;
+  }
+  void set_class(int object, ContactClass c) {
+    if (object < 0 || object >= object_count()) throw std::out_of_range("world: no object " + std::to_string(object));
+    classes.resize(static_cast<std::size_t>(object_count()), ContactClass::wall);
+    classes[static_cast<std::size_t>(object)] = c;
+  }
+  ContactClass contact_class(int object) const {
+    return static_cast<std::size_t>(object) < classes.size() ? classes[static_cast<std::size_t>(object)] : ContactClass::wall;
   }
   Motion motion(int object) const {
     return static_cast<std::size_t>(object) < motions.size() ? motions[static_cast<std::size_t>(object)] : Motion{};
@@ -81,6 +93,8 @@ struct WorldView {
   const Cylinder<Real>* cylinders;
   int cylinder_count;
   const Pose<Real>* pose;  // per object; null: a static world (every object still, none removed)
+  const ContactClass* object_class;  // per object; null: all plain walls (energy_ledger.hpp)
+  BLAZE_HD ContactClass class_of(int w) const { return object_class ? object_class[w] : ContactClass::wall; }
 };
 
 // What the move-world phase reads and writes (kernels/move_world.hpp).
@@ -107,6 +121,9 @@ class WorldStore {
       throw std::invalid_argument("world: motions must be given for every object or none");
     dynamic_ = w.dynamic();
     dt_ = dt;
+    if (!w.classes.empty() && w.classes.size() != static_cast<std::size_t>(w.object_count()))
+      throw std::invalid_argument("world: contact classes must be given for every object or none");
+    from_host(classes_, w.classes);
     if (!dynamic_) {
       from_host(polygons_, w.polygons);
       from_host(cylinders_, w.cylinders);
@@ -130,7 +147,7 @@ class WorldStore {
   }
   WorldView<Real> view() const {
     return {polygons_.data(), static_cast<int>(polygons_.size()), cylinders_.data(), static_cast<int>(cylinders_.size()),
-            dynamic_ ? poses_.data() : nullptr};
+            dynamic_ ? poses_.data() : nullptr, classes_.size() ? classes_.data() : nullptr};
   }
   WorldMotionView<Real> motion_view() {
     return {polygon_ref_.data(), polygons_.data(), static_cast<int>(polygons_.size()), cylinder_ref_.data(), cylinders_.data(),
@@ -148,6 +165,7 @@ class WorldStore {
   Buffer<Motion, Space> motions_;
   Buffer<Pose<Real>, Space> poses_;
   Buffer<std::uint64_t, Space> steps_;
+  Buffer<ContactClass, Space> classes_;
   bool dynamic_ = false;
   double dt_ = 0;
 };
