@@ -196,13 +196,13 @@ BOOST_AUTO_TEST_CASE(a_turning_mill_balances_drive_work_and_dissipation) {
     const auto start = sim.sample(1);
     const double e_start = start.energies.total() + start.stored.total();
     sim.run(static_cast<std::uint64_t>(std::llround(kRevolutions * period / dt)));
-    const auto end = sim.sample(1);
-    const double e_end = end.energies.total() + end.stored.total();
-    const double work = end.drive_work, taken = end.dissipated();
+    const auto last = sim.sample(1);
+    const double e_end = last.energies.total() + last.stored.total();
+    const double work = last.drive_work, taken = last.dissipated();
     BOOST_TEST_MESSAGE("mill, " << name << ", " << s.size() << " balls: drive " << work / (kRevolutions * period) << " W, dissipated "
-                                << taken / (kRevolutions * period) << " W (pairs " << end.dissipated_pair << " J, shell "
-                                << end.dissipated_walls[1] << ", lifters " << end.dissipated_walls[2] << ", end plates "
-                                << end.dissipated_walls[3] << "), dE " << e_end - e_start << " J; balance W - D - dE = "
+                                << taken / (kRevolutions * period) << " W (pairs " << last.dissipated_pair << " J, shell "
+                                << last.dissipated_walls[1] << ", lifters " << last.dissipated_walls[2] << ", end plates "
+                                << last.dissipated_walls[3] << "), dE " << e_end - e_start << " J; balance W - D - dE = "
                                 << work - taken - (e_end - e_start));
     BOOST_TEST_REQUIRE(sim.size() == s.size());
     BOOST_TEST_REQUIRE(work > 0);
@@ -211,8 +211,8 @@ BOOST_AUTO_TEST_CASE(a_turning_mill_balances_drive_work_and_dissipation) {
                    taken, work, tol::power_methods_agree);
     check_at_most({kCase, std::string("turning mill, ") + name + ": |W - D - dE| / W", "-", "the accounts close the balance"},
                   std::fabs(work - taken - (e_end - e_start)) / work, tol::ledger_balance);
-    BOOST_TEST(end.dissipated_walls[0] == 0.0);  // no plain walls in a mill
-    for (double d : {end.dissipated_pair, end.dissipated_walls[1], end.dissipated_walls[2]}) BOOST_TEST(d > 0.0);
+    BOOST_TEST(last.dissipated_walls[0] == 0.0);  // no plain walls in a mill
+    for (double d : {last.dissipated_pair, last.dissipated_walls[1], last.dissipated_walls[2]}) BOOST_TEST(d > 0.0);
     // (the end plates: only balls pushed along the axis touch them)
   };
   // K_T = 50 kg/s: K_T dt / m* = 0.15, as the thesis's eq. 4.3 friction with mu = 0.15 has it
