@@ -8,8 +8,8 @@
 // (contact_history.hpp), updates it and stores it back; an open pair's state is forgotten.
 // With Features::statistics each particle also counts its vertex-face and edge-edge contacts;
 // with Features::monitor it keeps its deepest overlap / radius (reset by the host). When the run
-// keeps energy accounts (energy_ledger.hpp), each side books half of -P dt of each of its pairs
-// (contact_power, contact_pair.hpp) to its pair column.
+// keeps energy accounts (energy_ledger.hpp), i books -(F_i . v_i + T_i . w_i) dt of its summed
+// pair force and torque (ContactSums::book) to its pair column.
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "kernels/broad_phase_kernels.hpp"
@@ -33,7 +33,6 @@ struct ContactForces {
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
     ContactSums<Real, Features> sums;
-    Real taken = 0;  // J, -P dt summed over i's pairs (energy accounts)
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
@@ -55,10 +54,9 @@ struct ContactForces {
       const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
       if constexpr (Law::kHistory) history.store(s, state);
       sums.template add<has_moment_v<Law, decltype(g)>>(c, g.point - a.body.x);
-      if (p.ledger.on()) taken -= pair_power<Features, has_moment_v<Law, decltype(g)>>(p, a, j, bj, g, c) * dt;
     }
     sums.store(p, stats, i);
-    if (p.ledger.on()) p.ledger.column[kLedgerPair][i] += Real(0.5) * taken;
+    sums.book(p, i, a.v, a.w, dt);
   }
 };
 

@@ -90,14 +90,6 @@ BLAZE_HD_INLINE Real contact_power(const Vec3<Real>& f, const Vec3<Real>& m, con
 template <class Law, class Geometry>
 inline constexpr bool has_moment_v = is_patch_geometry_v<Geometry> || Law::kRolling;
 
-// contact_power of the force c that pair_force returned for i (side a) and j (body bj).
-template <class Features, bool Moment, class Real, class Body, class Geometry>
-BLAZE_HD_INLINE Real pair_power(const ParticleView<Real>& p, const PairSide<Real, Body>& a, Index j, const Body& bj,
-                                const Geometry& g, const ContactForce<Real>& c) {
-  const Vec3<Real> zero{0, 0, 0};
-  const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : zero;
-  return contact_power(c.force, Moment ? c.moment : zero, a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
-}
 
 // Particle i's sums over its contacts, added in list order and stored once: force, torque
 // (Features::rotation), deepest overlap / radius (Features::monitor, kept as the maximum with
@@ -128,6 +120,18 @@ struct ContactSums {
   BLAZE_HD_INLINE void add(const ContactForce<Real>& c, const Vec3<Real>& r) {
     if constexpr (Moment) add(c.force, r, c.moment);
     else add(c.force, r);
+  }
+  // The energy accounts (energy_ledger.hpp): the power of i's pair forces and moments on i is
+  // F_i . v_i + T_i . w_i (the torque about x_i holds each contact's r x F and moment), and summed
+  // over all particles these give sum over pairs of P = F . (v_i - v_j) + (r_i x F + M) . w_i -
+  // (r_j x F + M) . w_j (contact_power): so each particle books -(F_i . v_i + T_i . w_i) dt to its
+  // pair column, whose total is the pairs' dissipation (its share per particle is not a pair's),
+  // with no work inside the loop over contacts (the dense bed's kernel kept its speed).
+  BLAZE_HD_INLINE void book(const ParticleView<Real>& p, Index i, const Vec3<Real>& v, const Vec3<Real>& w, Real dt) const {
+    if (!p.ledger.on()) return;
+    Real power = dot(f, v);
+    if constexpr (Features::rotation) power += dot(t, w);
+    p.ledger.column[kLedgerPair][i] -= power * dt;
   }
   BLAZE_HD_INLINE void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
     p.force.set(i, f);

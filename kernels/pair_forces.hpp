@@ -54,7 +54,6 @@ struct PairForces {
 
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
-    Real taken = 0;  // J, -P dt over the pairs i evaluates (energy accounts: the lower index books them)
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
@@ -75,9 +74,7 @@ struct PairForces {
       slots.set(slots.force, s, c.force);
       if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>> && Features::rotation) slots.set(slots.moment, s, c.moment);
       if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
-      if (p.ledger.on()) taken -= pair_power<Features, has_moment_v<Law, std::decay_t<decltype(g)>>>(p, a, j, bj, g, c) * dt;
     }
-    if (p.ledger.on()) p.ledger.column[kLedgerPair][i] += taken;
   }
 };
 
@@ -88,6 +85,7 @@ struct GatherPairForces {
   NeighbourView list;
   PairSlots<Real> slots;
   ContactStats stats;
+  Real dt;  // s (the energy accounts)
 
   BLAZE_HD void operator()(Index i) const {
     const Vec3<Real> xi = p.position.get(i);
@@ -110,6 +108,7 @@ struct GatherPairForces {
       }
     }
     sums.store(p, stats, i);
+    if (p.ledger.on()) sums.book(p, i, p.velocity.get(i), Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0}, dt);
   }
 };
 
