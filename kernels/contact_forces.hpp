@@ -7,9 +7,7 @@
 // A law with history (contact_state.hpp) loads each touching pair's state from i's own copy
 // (contact_history.hpp), updates it and stores it back; an open pair's state is forgotten.
 // With Features::statistics each particle also counts its vertex-face and edge-edge contacts;
-// with Features::monitor it keeps its deepest overlap / radius (reset by the host). When the run
-// keeps energy accounts (energy_ledger.hpp), i books -(F_i . v_i + T_i . w_i) dt of its summed
-// pair force and torque (ContactSums::book) to its pair column.
+// with Features::monitor it keeps its deepest overlap / radius (reset by the host).
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "kernels/broad_phase_kernels.hpp"
@@ -56,7 +54,6 @@ struct ContactForces {
       sums.template add<has_moment_v<Law, decltype(g)>>(c, g.point - a.body.x);
     }
     sums.store(p, stats, i);
-    sums.book(p, i, a.v, a.w, dt);
   }
 };
 

@@ -73,19 +73,6 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
   }
 }
 
-// The power of a contact's force F and moment M (on i about the contact point; j gets -F, -M) on
-// both bodies, at arms r_i = p - x_i and r_j = p - x_j (blaze/particles/energy_ledger.hpp):
-//   P = F . (v_i - v_j) + (r_i x F + M) . w_i - (r_j x F + M) . w_j              [W]
-// For a contact with a patch, M is the patch's moment, and P is the sum of F_k . v_rel(p_k) over
-// its points (the velocities of rigid bodies are affine in the point). -P dt is what the
-// contact took out of the motion in a step.
-template <class Real>
-BLAZE_HD_INLINE Real contact_power(const Vec3<Real>& f, const Vec3<Real>& m, const Vec3<Real>& v_i, const Vec3<Real>& w_i,
-                                   const Vec3<Real>& r_i, const Vec3<Real>& v_j, const Vec3<Real>& w_j,
-                                   const Vec3<Real>& r_j) {
-  return dot(f, v_i - v_j) + dot(cross(r_i, f) + m, w_i) - dot(cross(r_j, f) + m, w_j);
-}
-
 // Does a contact's force come with a moment (a patch, or a law with rolling resistance)?
 template <class Law, class Geometry>
 inline constexpr bool has_moment_v = is_patch_geometry_v<Geometry> || Law::kRolling;
@@ -120,18 +107,6 @@ struct ContactSums {
   BLAZE_HD_INLINE void add(const ContactForce<Real>& c, const Vec3<Real>& r) {
     if constexpr (Moment) add(c.force, r, c.moment);
     else add(c.force, r);
-  }
-  // The energy accounts (energy_ledger.hpp): the power of i's pair forces and moments on i is
-  // F_i . v_i + T_i . w_i (the torque about x_i holds each contact's r x F and moment), and summed
-  // over all particles these give sum over pairs of P = F . (v_i - v_j) + (r_i x F + M) . w_i -
-  // (r_j x F + M) . w_j (contact_power): so each particle books -(F_i . v_i + T_i . w_i) dt to its
-  // pair column, whose total is the pairs' dissipation (its share per particle is not a pair's),
-  // with no work inside the loop over contacts (the dense bed's kernel kept its speed).
-  BLAZE_HD_INLINE void book(const ParticleView<Real>& p, Index i, const Vec3<Real>& v, const Vec3<Real>& w, Real dt) const {
-    if (!p.ledger.on()) return;
-    Real power = dot(f, v);
-    if constexpr (Features::rotation) power += dot(t, w);
-    p.ledger.column[kLedgerPair][i] -= power * dt;
   }
   BLAZE_HD_INLINE void store(const ParticleView<Real>& p, const ContactStats& stats, Index i) const {
     p.force.set(i, f);

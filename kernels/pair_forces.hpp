@@ -85,7 +85,6 @@ struct GatherPairForces {
   NeighbourView list;
   PairSlots<Real> slots;
   ContactStats stats;
-  Real dt;  // s (the energy accounts)
 
   BLAZE_HD void operator()(Index i) const {
     const Vec3<Real> xi = p.position.get(i);
@@ -108,7 +107,6 @@ struct GatherPairForces {
       }
     }
     sums.store(p, stats, i);
-    if (p.ledger.on()) sums.book(p, i, p.velocity.get(i), Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0}, dt);
   }
 };
 

@@ -7,9 +7,10 @@
 // contact's state in a slot of the particle keyed by the object (contact_history.hpp): found or
 // claimed when touching, freed when the contact opens.
 // When the run keeps energy accounts (blaze/particles/energy_ledger.hpp), each contact books
-//   the drive's work    (F . v_w(p) + M . omega) dt               to the drive column, and
-//   the dissipation     -P dt, P = contact_power(F, M, v_i, w_i, r_i, v_w(p), omega, 0)
-//                       (contact_pair.hpp)                      to the object's class column.
+// the drive's work (F . v_w(p) + M . omega) dt to the drive column and to its object's class
+// column, and adds its force F and torque r x F + M to the class's sums of the particle
+// (EnergyLedger::class_sums, zeroed here every step); the integrator's last kick then books
+// -(F_c . v + T_c . w) dt with the step's final velocities (kernels/integrate.hpp, BookEnergy).
 #pragma once
 #include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
@@ -47,7 +48,8 @@ struct WorldForces {
     Real deepest = 0;
     unsigned seen = 0;  // slots of objects touched this step
     Real work = 0;      // J, done this step by moving objects on i (energy accounts)
-    Real taken[kContactClasses] = {};  // J, -P dt by the objects' contact class (energy accounts)
+    if (p.ledger.on())
+      for (int k = 0; k < kClassSumReals; ++k) p.ledger.class_sums[static_cast<std::size_t>(k) * p.ledger.n + i] = Real(0);
     // Object w (polygons first, then cylinders: the world's object index).
     const auto apply = [&](const auto& g, int material, int w) {
       if (!g.touching) return;
@@ -91,9 +93,13 @@ struct WorldForces {
       }
       if (p.ledger.on()) {
         const Vec3<Real> mc = kMoment && Features::rotation ? c.moment : zero;
-        const Vec3<Real> v_wall = pose ? pose->velocity_at(g.point) : zero;
-        work += (dot(c.force, v_wall) + dot(mc, w_wall)) * dt;
-        taken[static_cast<int>(world.class_of(w))] -= contact_power(c.force, mc, vi, wi, ri, v_wall, w_wall, zero) * dt;
+        const Real drive = (pose ? dot(c.force, pose->velocity_at(g.point)) + dot(mc, w_wall) : Real(0)) * dt;
+        const int cls = static_cast<int>(world.class_of(w));
+        work += drive;
+        p.ledger.column[kLedgerWalls + cls][i] += drive;
+        const Vec3<Real> tc = Features::rotation ? cross(ri, c.force) + mc : zero;
+        p.ledger.sum(cls, 0, i) += c.force.x, p.ledger.sum(cls, 1, i) += c.force.y, p.ledger.sum(cls, 2, i) += c.force.z;
+        p.ledger.sum(cls, 3, i) += tc.x, p.ledger.sum(cls, 4, i) += tc.y, p.ledger.sum(cls, 5, i) += tc.z;
       }
     };
     int w = 0;
@@ -103,10 +109,7 @@ struct WorldForces {
       if (!world.pose || world.pose[w].active) apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material, w);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
-    if (p.ledger.on() && dt > Real(0)) {  // (dt = 0: the forces before the first step, no work)
-      p.ledger.column[kLedgerDrive][i] += work;
-      for (int c = 0; c < kContactClasses; ++c) p.ledger.column[kLedgerWalls + c][i] += taken[c];
-    }
+    if (p.ledger.on()) p.ledger.column[kLedgerDrive][i] += work;
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
     if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);

@@ -364,7 +364,7 @@ class Simulation {
         check_phase("rebuild-check", broad_.rebuild_check_functor(store_)),
         kernel_phase("contacts", contact_forces(history_dt), !once),
         kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt}, once),
-        kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats(), history_dt}, once),
+        kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats()}, once),
         kernel_phase("walls", world_forces(history_dt), !world_.empty()),
         kernel_phase("integrate", integrate<Stage::post_force>()));
     static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");

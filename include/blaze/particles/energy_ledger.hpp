@@ -1,23 +1,30 @@
 // Each particle's energy accounts (J, since the last sample), kept when the world moves or a run
 // asks for them (SimulationParams::energy_ledger); the sample (kernels/sample_tally.hpp) adds them
 // up and resets them. Columns:
-//   drive        W = sum F . v_w(p) dt + M . omega_w dt: the work moving world objects do on the
-//                particle (F, M: the contact's force on the particle and its moment about the
-//                contact point p; v_w, omega_w: the object's velocity at p and its spin)
-//   pair         D = -sum P dt over the particle's particle-particle contacts, where
-//                P = F . (v_i - v_j) + (r_i x F + M) . w_i - (r_j x F + M) . w_j   [W]
-//                is the power of the contact's force and moment on both bodies (r = p - x):
-//                what the contact takes out of the bodies' motion. Over a contact's life the
-//                elastic part integrates to zero (its stored energy is zero when it opens), so D
-//                is what the dashpots, friction and rolling resistance dissipated, plus the elastic
-//                energy the contact holds at the sample (StoredContactEnergy reports it).
-//   wall classes D for the particle-world contacts, the same P with the object as body j
-//                (v_j = v_w(p), w_j = omega_w), split by the object's contact class (world.hpp):
-//                wall, shell, lifter, end plate.
+//   drive        W = sum (F . v_w(p) + M . omega_w) dt over the particle's contacts with moving
+//                world objects (F, M: the contact's force on the particle and its moment about the
+//                contact point p; v_w, omega_w: the object's velocity at p and its spin): the work
+//                the drive does on the charge
+//   pair         D = -sum (F_i . v_i + T_i . w_i) dt, F_i and T_i the particle's summed
+//                particle-particle contact force and torque (about its centre): summed over all
+//                particles, the energy the particle-particle contacts took out of the motion
+//   wall classes D_c = -sum (F_c . v_i + T_c . w_i - W_c) dt, F_c, T_c and W_c the particle's
+//                force, torque and drive power from its contacts with objects of class c (world.hpp:
+//                wall, shell, lifter, end plate)
+// Over a contact's life the elastic part of -P dt integrates to zero (its stored energy is zero
+// when it opens), so D is what the dashpots, friction and rolling resistance dissipated, plus the
+// elastic energy the contacts hold at the sample (StoredContactEnergy reports it).
+// Exact booking: velocity Verlet changes a particle's kinetic energy between the half steps
+// n - 1/2 and n + 1/2 by exactly F_n . v_n dt (v_n = (v_{n-1/2} + v_{n+1/2}) / 2, the velocity
+// after the step's second kick), so the accounts are booked after that kick
+// (kernels/integrate.hpp, BookEnergy) with v_n, w_n, not at the forces' evaluation (whose
+// predicted velocity differs by (a_n - a_{n-1}) dt / 2: booked there, a mill's accounts were 28%
+// off with the thesis's eq. 4.3 friction at mu = 0.5). The force kernels leave the wall classes'
+// F_c, T_c per particle in `class_sums` for it (6 reals per class, 24 per particle, rewritten each
+// step; pairs are the rest of the particle's force and torque).
 // This is the energy method of mill power (the thesis's section 4.1.4 sums |F_diss| |v| dt over
-// the dissipative forces; the power P above is the exact rate of the same work for any law,
-// history included). A pair's account goes to the lower index when each pair is evaluated once,
-// half to each side otherwise: the totals agree, per-particle values need not.
+// the dissipative forces, an upper bound of their work: |F . v| <= |F| |v|; the power above is the
+// rate of the same work for any law, history included).
 #pragma once
 #include <cstdint>
 #include "blaze/config.hpp"
@@ -36,10 +43,15 @@ enum LedgerColumn : int { kLedgerDrive = 0, kLedgerPair = 1, kLedgerWalls = 2 };
 inline constexpr int kLedgerColumns = kLedgerWalls + kContactClasses;
 inline constexpr int ledger_column(ContactClass c) { return kLedgerWalls + static_cast<int>(c); }
 
+inline constexpr int kClassSumReals = 6 * kContactClasses;  // F_c (3), T_c (3) per wall class
+
 template <class Real>
 struct EnergyLedger {
   Real* column[kLedgerColumns];  // null: not kept
+  Real* class_sums;              // [(6 c + k) n + i]: F_c then T_c of particle i (k = 0..5)
+  Index n;                       // the stride of class_sums
   BLAZE_HD bool on() const { return column[0] != nullptr; }
+  BLAZE_HD Real& sum(int c, int k, Index i) const { return class_sums[static_cast<std::size_t>(6 * c + k) * n + i]; }
 };
 
 }  // namespace blaze

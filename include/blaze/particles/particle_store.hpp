@@ -86,6 +86,7 @@ class ParticleStore {
     from_host(id_, s.id);
     from_host(penetration_, std::vector<Real>(monitor ? n_ : 0, Real(0)));
     for (auto& c : ledger_) from_host(c, std::vector<Real>(ledger ? n_ : 0, Real(0)));
+    from_host(class_sums_, std::vector<Real>(ledger ? kClassSumReals * n_ : 0, Real(0)));
     scratch_real_.resize(n_);
   }
 
@@ -127,6 +128,7 @@ class ParticleStore {
   void keep_ledger() {
     for (auto& c : ledger_)
       if (c.size() < static_cast<std::size_t>(n_)) from_host(c, std::vector<Real>(n_, Real(0)));
+    from_host(class_sums_, std::vector<Real>(kClassSumReals * static_cast<std::size_t>(n_), Real(0)));
   }
   bool keeps_ledger() const { return ledger_[0].size() > 0; }
 
@@ -156,6 +158,7 @@ class ParticleStore {
       throw std::invalid_argument("particle snapshot: wrong number of fields");
     n_ = static_cast<Index>(s.id.size());
     for (auto& c : ledger_) c.resize(0);
+    class_sums_.resize(0);
     for (std::size_t k = 0; k < s.reals.size(); ++k) {
       if (!s.reals[k].empty() && s.reals[k].size() != s.id.size())
         throw std::invalid_argument("particle snapshot: field " + std::to_string(k) + " has the wrong length");
@@ -219,6 +222,7 @@ class ParticleStore {
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
     b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size()) * sizeof(Real);
     for (const auto& c : ledger_) b += c.size() * sizeof(Real);
+    b += class_sums_.size() * sizeof(Real);
     b += material_.size() + type_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
     return b;
   }
@@ -229,6 +233,8 @@ class ParticleStore {
   EnergyLedger<Real> ledger_view() {
     EnergyLedger<Real> l;
     for (int c = 0; c < kLedgerColumns; ++c) l.column[c] = ledger_[c].size() ? ledger_[c].data() : nullptr;
+    l.class_sums = class_sums_.size() ? class_sums_.data() : nullptr;
+    l.n = static_cast<Index>(class_sums_.size() / kClassSumReals);  // the stride it was sized with
     return l;
   }
   static Vec3Field<Real> field(Field3& f) { return {f[0].data(), f[1].data(), f[2].data()}; }
@@ -281,6 +287,7 @@ class ParticleStore {
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
   Buffer<Real, Space> penetration_;  // Features::monitor only
   Buffer<Real, Space> ledger_[kLedgerColumns];  // energy_ledger.hpp; a moving world, or when asked
+  Buffer<Real, Space> class_sums_;  // with the ledger: the walls' force and torque per class, this step
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;
