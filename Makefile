@@ -12,6 +12,7 @@
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
 #   make figures           all of them; make verification-readme renders verification/README.md
 #   make fig-repose        angle of repose, mu_s x mu_r (studies/repose; GPU if present); fig-repose-liggghts: LIGGGHTS side
+#   make table-4.4         the thesis's lab-mill power table (studies/mill), two contact laws -> studies/mill/table-4.4.md
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
@@ -233,6 +234,15 @@ fig-repose-liggghts: deps
 	tools/repose_liggghts.sh --blaze $(BUILD)/cpu/study_repose $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS_small)
 	gnuplot -e "dir='data/repose'; size='small'" plots/repose.gp
 	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
+
+# ---- tumbling mills (studies/mill) ---------------------------------------------------------------
+# make table-4.4: the thesis's Table 4.4 (3D lab mill: 20% and 30% filling, 14/22/32 rpm) with the
+# history-free law and Hertz-Mindlin -> data/mill/table-4.4/, studies/mill/table-4.4.md,
+# plots/fig-mill-power.png (tools/table_4_4.sh; ~10 minutes on 2 CPU cores).
+.PHONY: table-4.4
+table-4.4: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
+	tools/table_4_4.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk
