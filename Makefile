@@ -13,6 +13,7 @@
 #   make figures           all of them; make verification-readme renders verification/README.md
 #   make fig-repose        angle of repose, mu_s x mu_r (studies/repose; GPU if present); fig-repose-liggghts: LIGGGHTS side
 #   make table-4.4         the thesis's lab-mill power table (studies/mill), two contact laws -> studies/mill/table-4.4.md
+#   make fig-slice-mill    the slice mill's power and centrifuging layers against speed (studies/mill)
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
@@ -239,10 +240,15 @@ fig-repose-liggghts: deps
 # make table-4.4: the thesis's Table 4.4 (3D lab mill: 20% and 30% filling, 14/22/32 rpm) with the
 # history-free law and Hertz-Mindlin -> data/mill/table-4.4/, studies/mill/table-4.4.md,
 # plots/fig-mill-power.png (tools/table_4_4.sh; ~10 minutes on 2 CPU cores).
-.PHONY: table-4.4
+# make fig-slice-mill: the slice mill of section 4.2.2 at 30-160% of critical speed -> data/mill/slice/,
+# studies/mill/slice-mill.md, plots/fig-slice-mill.png (tools/slice_mill.sh; ~10 minutes on 2 cores).
+.PHONY: table-4.4 fig-slice-mill
 table-4.4: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/table_4_4.sh $(BUILD)/$(RUN_BACKEND)/study_mill
+fig-slice-mill: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
+	tools/slice_mill.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk

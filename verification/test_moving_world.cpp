@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include "blaze/scene/mill_geometry.hpp"
+#include "blaze/sim/centrifuging.hpp"
 #include "blaze/sim/charge_profile.hpp"
 #include "pipeline/run_log.hpp"
 #include "verification/report.hpp"
@@ -376,6 +377,37 @@ BOOST_AUTO_TEST_CASE(charge_profile_finds_toe_and_shoulder) {
     BOOST_TEST(p.shoulder_deg == c.shoulder, "shoulder " << p.shoulder_deg << " vs " << c.shoulder);
   }
   BOOST_TEST(!charge_profile(std::vector<Vec3<double>>{{0, 0, 0}}, {0, 0, 0}, {0, 0, 1}, R, 0.02, 1).found);
+}
+
+// Centrifuging balls (include/blaze/sim/centrifuging.hpp) of a synthetic revolution: a full ring
+// of balls on the shell and a partial second ring one diameter in turn with the drum, a stray ball
+// deeper in, and a cascading heap that rocks back and forth; for both senses of rotation.
+BOOST_AUTO_TEST_CASE(centrifuging_balls_and_their_layers) {
+  const double R = 0.275, r = 0.011, d = 2 * r;
+  for (double sign : {1.0, -1.0}) {
+    CentrifugeTracker tracker({0, 0, 0}, {0, 0, 1}, R, sign);
+    const int ring1 = 60, ring2 = 20, heap = 30, samples = 72;
+    for (int k = 0; k <= samples; ++k) {
+      const double turn = sign * 2 * kPi * k / samples;  // the drum's angle
+      std::vector<Vec3<double>> x;
+      std::vector<double> radius;
+      std::vector<int> id;
+      const auto put = [&](double phi, double rho) {
+        x.push_back({rho * std::sin(phi), -rho * std::cos(phi), 0});
+        radius.push_back(r);
+        id.push_back(static_cast<int>(id.size()));
+      };
+      for (int b = 0; b < ring1; ++b) put(2 * kPi * b / ring1 + turn, R - r);
+      for (int b = 0; b < ring2; ++b) put(2 * kPi * b / ring2 + turn, R - r - 0.95 * d);
+      put(turn, R - r - 3 * d);  // one ball deeper in: a stray, not a layer
+      for (int b = 0; b < heap; ++b) put(0.3 * std::sin(0.7 * k + b), R - r - d * (b % 4));  // rocks, never turns
+      tracker.add(x, radius, id);
+    }
+    const CentrifugingReport rep = tracker.report();
+    BOOST_TEST(rep.tracked == ring1 + ring2 + 1 + heap);
+    BOOST_TEST(rep.balls == ring1 + ring2 + 1);
+    BOOST_TEST(rep.layers == 2);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

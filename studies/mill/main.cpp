@@ -13,8 +13,10 @@
 // ball-end plate (the thesis's Table 4.7 split). At steady state the two agree (the charge's energy
 // returns each revolution); both go to the CSV with their ratio. Each revolution also gives the
 // charge's toe and shoulder (include/blaze/sim/charge_profile.hpp: degrees from the bottom of
-// the drum, positive in its direction of rotation). Any sphere law of the scene file: the
-// history-free law (the thesis's) or Hertz-Mindlin / the linear spring, with rolling resistance.
+// the drum, positive in its direction of rotation) and the balls centrifuging over it, with the
+// layers they make (include/blaze/sim/centrifuging.hpp; positions sampled 72 times a revolution).
+// Any sphere law of the scene file: the history-free law (the thesis's) or Hertz-Mindlin / the
+// linear spring, with rolling resistance.
 // Writes <output directory>/{power.csv, manifest.txt}; the scene's [output] rows and frames as
 // `blaze run` would are not written (use blaze run for those).
 #include <chrono>
@@ -31,6 +33,7 @@
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
+#include "blaze/sim/centrifuging.hpp"
 #include "blaze/sim/charge_profile.hpp"
 #include "pipeline/simulation.hpp"
 
@@ -61,7 +64,7 @@ int run(const Scene& s) {
   std::filesystem::create_directories(dir);
   std::ofstream csv(dir + "/power.csv");
   csv << "revolution,t_end_s,power_W,energy_method_W,pair_W,shell_W,lifter_W,end_plate_W,wall_W,kinetic_J,dissipated_J,"
-         "drive_work_J,balls,toe_deg,shoulder_deg\n";
+         "drive_work_J,balls,toe_deg,shoulder_deg,centrifuging_balls,centrifuging_layers\n";
   const auto steps_to = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
   const auto wall0 = std::chrono::steady_clock::now();
   const auto e0_sample = sim.sample(s.output.penetration_warning);  // E(0), the balance's start
@@ -69,8 +72,22 @@ int run(const Scene& s) {
   double work = 0, work_at = 0, sum = 0, sum_energy = 0, worst = 0;
   double by_class[1 + kContactClasses] = {}, class_sum[1 + kContactClasses] = {};  // J: pairs, then the walls' classes
   int averaged = 0, rev = 0;
+  CentrifugingReport spun;  // the last revolution's (centrifuging.hpp)
   for (double t_end = first; t_end <= s.end_time + 1e-12; t_end += period, ++rev) {
-    sim.run(steps_to(t_end) - sim.steps());
+    // the revolution in kSamples parts, the balls' positions sampled at each (centrifuging)
+    constexpr int kSamples = 72;
+    CentrifugeTracker tracker(s.mill.centre, s.mill.axis, 0.5 * s.mill.diameter, s.mill.omega);
+    const auto track = [&] {
+      const auto st = sim.state();
+      tracker.add(st.position, st.radius, st.id);
+    };
+    const double t_start = rev > 0 ? t_end - period : sim.time();
+    if (rev > 0) track();
+    for (int k = 1; k <= kSamples; ++k) {
+      sim.run(steps_to(t_start + (t_end - t_start) * k / kSamples) - sim.steps());
+      if (rev > 0) track();
+    }
+    if (rev > 0) spun = tracker.report();
     const auto smp = sim.sample(s.output.penetration_warning);
     work += smp.drive_work;
     by_class[0] = smp.dissipated_pair;  // this revolution's (the sample resets the accounts)
@@ -89,9 +106,10 @@ int run(const Scene& s) {
                     1 + static_cast<int>(ContactClass::end_plate), 1 + static_cast<int>(ContactClass::wall)})
         csv << ',' << by_class[c] / period;
       csv << ',' << smp.energies.kinetic() << ',' << dissipated << ',' << work << ',' << sim.size() << ',' << cp.toe_deg << ','
-          << cp.shoulder_deg << '\n';
-      std::printf("  revolution %3d (t = %6.2f s): %8.2f W (energy method %8.2f W), toe %6.1f deg, shoulder %6.1f deg\n", rev,
-                  sim.time(), power, energy_method, cp.toe_deg, cp.shoulder_deg);
+          << cp.shoulder_deg << ',' << spun.balls << ',' << spun.layers << '\n';
+      std::printf("  revolution %3d (t = %6.2f s): %8.2f W (energy method %8.2f W), toe %6.1f deg, shoulder %6.1f deg, "
+                  "%d balls centrifuging in %d layers\n",
+                  rev, sim.time(), power, energy_method, cp.toe_deg, cp.shoulder_deg, spun.balls, spun.layers);
       if (rev > skip) {
         sum += power, sum_energy += energy_method, ++averaged;
         for (int c = 0; c <= kContactClasses; ++c) class_sum[c] += by_class[c];
@@ -125,6 +143,7 @@ int run(const Scene& s) {
   m["revolutions_averaged"] = std::to_string(averaged), m["rpm"] = num(s.mill.omega * 60 / (2 * 3.14159265358979323846));
   m["balls"] = std::to_string(balls.size()), m["dt_s"] = num(s.dt), m["wall_time_s"] = num(wall);
   m["steps_per_s"] = num(static_cast<double>(sim.steps()) / wall);
+  m["centrifuging_balls"] = std::to_string(spun.balls), m["centrifuging_layers"] = std::to_string(spun.layers);
   write_manifest(dir + "/manifest.txt", m);
   std::printf("wrote %s/power.csv, %s/manifest.txt\n", dir.c_str(), dir.c_str());
   return sim.removed_count() ? 2 : 0;
