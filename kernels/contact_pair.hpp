@@ -77,7 +77,6 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
 template <class Law, class Geometry>
 inline constexpr bool has_moment_v = is_patch_geometry_v<Geometry> || Law::kRolling;
 
-
 // Particle i's sums over its contacts, added in list order and stored once: force, torque
 // (Features::rotation), deepest overlap / radius (Features::monitor, kept as the maximum with
 // what the host reset), and contact counts by kind (Features::statistics).

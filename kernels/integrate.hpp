@@ -23,7 +23,7 @@ BLAZE_HD void book_energy(const ParticleView<Real>& p, Index i, Real dt) {
     const Vec3<Real> f{l.sum(c, 0, i), l.sum(c, 1, i), l.sum(c, 2, i)};
     const Vec3<Real> t = Features::rotation ? Vec3<Real>{l.sum(c, 3, i), l.sum(c, 4, i), l.sum(c, 5, i)} : Vec3<Real>{0, 0, 0};
     f_pair -= f, t_pair -= t;
-    l.column[kLedgerWalls + c][i] -= (dot(f, v) + dot(t, w)) * dt;
+    l.column[ledger_column(static_cast<ContactClass>(c))][i] -= (dot(f, v) + dot(t, w)) * dt;
   }
   p.ledger.column[kLedgerPair][i] -= (dot(f_pair, v) + dot(t_pair, w)) * dt;
 }

@@ -10,7 +10,7 @@
 // the drive's work (F . v_w(p) + M . omega) dt to the drive column and to its object's class
 // column, and adds its force F and torque r x F + M to the class's sums of the particle
 // (EnergyLedger::class_sums, zeroed here every step); the integrator's last kick then books
-// -(F_c . v + T_c . w) dt with the step's final velocities (kernels/integrate.hpp, BookEnergy).
+// -(F_c . v + T_c . w) dt with the step's final velocities (kernels/integrate.hpp, book_energy).
 #pragma once
 #include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
@@ -94,9 +94,10 @@ struct WorldForces {
       if (p.ledger.on()) {
         const Vec3<Real> mc = kMoment && Features::rotation ? c.moment : zero;
         const Real drive = (pose ? dot(c.force, pose->velocity_at(g.point)) + dot(mc, w_wall) : Real(0)) * dt;
-        const int cls = static_cast<int>(world.class_of(w));
+        const ContactClass cc = world.class_of(w);
+        const int cls = static_cast<int>(cc);
         work += drive;
-        p.ledger.column[kLedgerWalls + cls][i] += drive;
+        p.ledger.column[ledger_column(cc)][i] += drive;
         const Vec3<Real> tc = Features::rotation ? cross(ri, c.force) + mc : zero;
         p.ledger.sum(cls, 0, i) += c.force.x, p.ledger.sum(cls, 1, i) += c.force.y, p.ledger.sum(cls, 2, i) += c.force.z;
         p.ledger.sum(cls, 3, i) += tc.x, p.ledger.sum(cls, 4, i) += tc.y, p.ledger.sum(cls, 5, i) += tc.z;

@@ -17,7 +17,7 @@
 // Exact booking: velocity Verlet changes a particle's kinetic energy between the half steps
 // n - 1/2 and n + 1/2 by exactly F_n . v_n dt (v_n = (v_{n-1/2} + v_{n+1/2}) / 2, the velocity
 // after the step's second kick), so the accounts are booked after that kick
-// (kernels/integrate.hpp, BookEnergy) with v_n, w_n, not at the forces' evaluation (whose
+// (kernels/integrate.hpp, book_energy) with v_n, w_n, not at the forces' evaluation (whose
 // predicted velocity differs by (a_n - a_{n-1}) dt / 2: booked there, a mill's accounts were 28%
 // off with the thesis's eq. 4.3 friction at mu = 0.5). The force kernels leave the wall classes'
 // F_c, T_c per particle in `class_sums` for it (6 reals per class, 24 per particle, rewritten each
@@ -41,7 +41,7 @@ inline const char* contact_class_name(int c) {
 
 enum LedgerColumn : int { kLedgerDrive = 0, kLedgerPair = 1, kLedgerWalls = 2 };
 inline constexpr int kLedgerColumns = kLedgerWalls + kContactClasses;
-inline constexpr int ledger_column(ContactClass c) { return kLedgerWalls + static_cast<int>(c); }
+BLAZE_HD inline constexpr int ledger_column(ContactClass c) { return kLedgerWalls + static_cast<int>(c); }
 
 inline constexpr int kClassSumReals = 6 * kContactClasses;  // F_c (3), T_c (3) per wall class
 
