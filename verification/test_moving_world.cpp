@@ -381,7 +381,8 @@ BOOST_AUTO_TEST_CASE(charge_profile_finds_toe_and_shoulder) {
 
 // Centrifuging balls (include/blaze/sim/centrifuging.hpp) of a synthetic revolution: a full ring
 // of balls on the shell and a partial second ring one diameter in turn with the drum, a stray ball
-// deeper in, and a cascading heap that rocks back and forth; for both senses of rotation.
+// deeper in, a cascading heap that rocks back and forth, and a ball flying past the axis whose
+// angle jumps by ~3 rad between samples (it would count 0.9 turns and more); both senses of rotation.
 BOOST_AUTO_TEST_CASE(centrifuging_balls_and_their_layers) {
   const double R = 0.275, r = 0.011, d = 2 * r;
   for (double sign : {1.0, -1.0}) {
@@ -401,10 +402,12 @@ BOOST_AUTO_TEST_CASE(centrifuging_balls_and_their_layers) {
       for (int b = 0; b < ring2; ++b) put(2 * kPi * b / ring2 + turn, R - r - 0.95 * d);
       put(turn, R - r - 3 * d);  // one ball deeper in: a stray, not a layer
       for (int b = 0; b < heap; ++b) put(0.3 * std::sin(0.7 * k + b), R - r - d * (b % 4));  // rocks, never turns
+      // a cataracting ball crossing near the axis, its angle jumping by ~3 rad per sample
+      put(sign * 3.0 * k, 0.02);
       tracker.add(x, radius, id);
     }
     const CentrifugingReport rep = tracker.report();
-    BOOST_TEST(rep.tracked == ring1 + ring2 + 1 + heap);
+    BOOST_TEST(rep.tracked == ring1 + ring2 + 1 + heap + 1);
     BOOST_TEST(rep.balls == ring1 + ring2 + 1);
     BOOST_TEST(rep.layers == 2);
   }

@@ -5,7 +5,9 @@
 //   turn   = sum over the samples of the change of its angle (wrapped to (-pi, pi]), times the
 //            sign of the drum's rotation: 2 pi for a ball carried round with the drum
 //   depth  = R - mean distance from the axis (m): r for a ball on the shell
-// A ball centrifuges when turn >= 0.9 (2 pi) over the revolution. Its layer is
+// A ball centrifuges when turn >= 0.9 (2 pi) over the revolution and it never left the shell's
+// neighbourhood: its largest depth stays below kMaxLayers ball diameters (a cataracting ball that
+// flies past the axis turns by up to pi between two samples, which could count as a turn). Its layer is
 // 1 + floor((depth - r) / (0.9 d)) (d = 2 r: the second layer's centres sit ~d further in, the
 // 0.9 leaves room for the packing's offsets), and the layers counted are those holding at least
 // `min_balls` of the centrifuging balls (a stray ball does not make a layer).
@@ -50,6 +52,7 @@ class CentrifugeTracker {
         b.turn += sign_ * step;
       }
       b.phi = phi, b.rho_sum += rho, b.radius = static_cast<double>(radius[k]), ++b.samples;
+      b.max_depth = std::fmax(b.max_depth, r_shell_ - rho);
     }
   }
   CentrifugingReport report(int min_balls = 3) const {
@@ -58,7 +61,7 @@ class CentrifugeTracker {
     for (const auto& [id, b] : balls_) {
       if (b.samples != samples_) continue;  // left or arrived during the revolution
       ++out.tracked;
-      if (b.turn < 0.9 * 2 * kPi) continue;
+      if (b.turn < 0.9 * 2 * kPi || b.max_depth > kMaxLayers * 2 * b.radius) continue;
       ++out.balls;
       const double depth = r_shell_ - b.rho_sum / b.samples;
       ++per_layer[1 + static_cast<int>(std::floor(std::fmax(depth - b.radius, 0.0) / (0.9 * 2 * b.radius)))];
@@ -69,8 +72,9 @@ class CentrifugeTracker {
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
+  static constexpr double kMaxLayers = 4;  // deeper than this many diameters: not carried by the shell
   struct Ball {
-    double phi = 0, turn = 0, rho_sum = 0, radius = 0;
+    double phi = 0, turn = 0, rho_sum = 0, radius = 0, max_depth = 0;
     int samples = 0;
   };
   Vec3<double> c_, a_, e1_, e2_;
