@@ -861,6 +861,7 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
   shell.length = m.length;
   shell.motion = motion;
   shell.contact_class = ContactClass::shell;
+  shell.name = "mill shell";
   s.cylinders.push_back(shell);
   for (const MillWall& w : mill_walls(m)) {
     WallSpec spec;

@@ -311,6 +311,24 @@ BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
   }
 }
 
+// A charge that does not fit in the drum: the lattice of the base scene (at -0.05 m) against a mill
+// of 6 cm centred at the origin is outside its shell; the message names the [mill] and its diameter
+// (not a [[cylinder]] the file does not have).
+BOOST_AUTO_TEST_CASE(a_charge_outside_the_mill_is_named_with_the_mill) {
+  const std::string mill = "[mill]\nmaterial = \"steel\"\ncentre = [0, 0, 0]\naxis = [0, 0, 1]\ndiameter = 0.06\nlength = 0.15\n"
+                           "rpm = 32\n";
+  const std::string text = kBase + mill;
+  const Scene s = parse_scene(text, "scene.toml");
+  const std::string msg = rejection([&] { (void)build_particles<double>(s, nullptr); });
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(text.find("diameter = 0.06")), '\n'));
+  BOOST_TEST_CONTEXT(msg) {
+    BOOST_TEST(has(msg, "outside"));
+    BOOST_TEST(has(msg, "the [mill]'s shell"));
+    BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line) + ": [mill]: key 'diameter' = 0.06"));
+    BOOST_TEST(!has(msg, "[[cylinder]]"));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(poisson_ratio_outside_its_range_is_rejected) {
   for (const char* nu : {"0.5", "-1", "0.7"}) {
     const std::string text = edit("poisson_ratio = 0.23", std::string("poisson_ratio = ") + nu, hertz_scene());

@@ -112,6 +112,7 @@ struct WallSpec {  // convex planar polygon; the normal follows the right-hand r
   ContactClass contact_class = ContactClass::wall;  // its dissipation's account (energy_ledger.hpp)
 };
 struct CylinderSpec {  // drum: particles inside, contact on the inner surface
+  std::string name;  // "mill shell" for a [mill]'s; empty otherwise
   int material = 0;
   Vec3<double> origin, axis;  // m, centre of the first end; direction (any length)
   double radius = 0, length = 0;

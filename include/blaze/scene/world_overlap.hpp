@@ -24,18 +24,28 @@
 namespace blaze {
 
 class WorldOverlapCheck {
+  // The [mill]'s generated objects are named "mill <part>" (scene_toml.cpp): messages name the [mill].
+  static bool is_mill(const std::string& name) { return name.rfind("mill ", 0) == 0; }
+  std::string mill_name(const std::string& name) const {
+    return "the [mill]'s " + name.substr(5) + " (" + s_.place("mill.diameter") + " = " + Scene::shortest(s_.mill.diameter) + " m)";
+  }
+
  public:
   WorldOverlapCheck(const Scene& s, double slack) : s_(s), slack_(slack) {
     // The objects' names for messages, formed once (a check runs per particle and object).
     for (std::size_t k = 0; k < s.walls.size(); ++k) {
       polygons_.push_back(PlanarPolygon<double>::make(s.walls[k].vertices, 0, s.walls[k].rim_edges));
-      polygon_names_.push_back("[[wall]] #" + std::to_string(k + 1) + " (" + s.place("wall[" + std::to_string(k) + "].vertices") + ")");
+      polygon_names_.push_back(is_mill(s.walls[k].name)
+                                   ? mill_name(s.walls[k].name)
+                                   : "[[wall]] #" + std::to_string(k + 1) + " (" + s.place("wall[" + std::to_string(k) + "].vertices") + ")");
     }
     for (std::size_t k = 0; k < s.cylinders.size(); ++k) {
       const CylinderSpec& c = s.cylinders[k];
       cylinders_.push_back(Cylinder<double>::make(c.origin, c.axis, c.radius, c.length, 0));
-      cylinder_names_.push_back("[[cylinder]] #" + std::to_string(k + 1) + " (" +
-                                s.place("cylinder[" + std::to_string(k) + "].radius") + " = " + Scene::shortest(c.radius) + " m)");
+      cylinder_names_.push_back(is_mill(c.name) ? mill_name(c.name)
+                                                : "[[cylinder]] #" + std::to_string(k + 1) + " (" +
+                                                      s.place("cylinder[" + std::to_string(k) + "].radius") + " = " +
+                                                      Scene::shortest(c.radius) + " m)");
     }
     front_.assign(polygons_.size(), 0);
     behind_.assign(polygons_.size(), 0);
