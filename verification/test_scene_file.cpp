@@ -311,6 +311,36 @@ BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
   }
 }
 
+// History-free friction without tangential_damping takes the thesis's eq. 4.3 (K_T = mu m*/dt, the
+// rate capped at 0.5) and says so; an explicit tangential_damping, 0 included, keeps its K_T; a
+// pair without friction gets no rate. The built law's K_T follows m*/dt.
+using State0 = LinearLaw<double>::State;
+BOOST_AUTO_TEST_CASE(friction_without_tangential_damping_takes_eq_4_3) {
+  const auto note_of = [](const Scene& sc) {
+    for (const auto& n : sc.notes)
+      if (has(n, "eq. 4.3")) return n;
+    return std::string();
+  };
+  for (double mu : {0.1, 0.3, 0.5, 0.9}) {
+    const std::string text = edit("friction = 0.3", "friction = " + std::to_string(mu));
+    const Scene sc = parse_scene(text, "scene.toml");
+    BOOST_TEST(sc.pairs[0].tangential_rate == std::min(mu, 0.5));
+    BOOST_TEST(sc.pairs[1].tangential_rate == 0.0);  // no friction
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(text.find("friction = ")), '\n'));
+    BOOST_TEST(has(note_of(sc), "scene.toml:" + std::to_string(line) + ":"), note_of(sc));
+    const auto law = build_laws<LinearLaw<double>>(sc)(0, 0);
+    State0 none{};
+    const double m_eff = 0.01, dt = 1e-5, v = 1e-4;  // slow slip: the viscous branch
+    const auto t = law.tangential.force({{0, 1, 0}, 1e-4, 1e-3, {v, 0, 0}, 0, 1.0, m_eff, dt}, none, 0);
+    BOOST_TEST(std::fabs(t.force.x + std::min(mu, 0.5) * m_eff / dt * v) < 1e-12);
+  }
+  for (const char* kt : {"0", "2.5"}) {
+    const Scene sc = parse_scene(edit("friction = 0.3", std::string("friction = 0.3\ntangential_damping = ") + kt), "scene.toml");
+    BOOST_TEST(sc.pairs[0].tangential_rate == 0.0);
+    BOOST_TEST(note_of(sc).empty());
+  }
+}
+
 // A charge that does not fit in the drum: the lattice of the base scene (at -0.05 m) against a mill
 // of 6 cm centred at the origin is outside its shell; the message names the [mill] and its diameter
 // (not a [[cylinder]] the file does not have).
