@@ -8,6 +8,7 @@
 #   make fig-3.24          one of the thesis's performance figures (fig-2.14, fig-3.21 ... fig-3.26)
 #                          with our numbers -> plots/perf/; make perf-figures: all of them
 #   make test SANITIZE=1   the CPU suite built with AddressSanitizer + UndefinedBehaviorSanitizer (in build-sanitize/)
+#   make test POISON=1     the CPU suite with every buffer born as 0xFF bytes (in build-poison/)
 #   make stress            the stress suite at full size (10^5 particles x 10^5 steps; GPU if present)
 #   make fig-2.11          one thesis figure's verification case -> data/verification/, plots/fig-2.11.png
 #   make figures           all of them; make verification-readme renders verification/README.md
@@ -19,7 +20,8 @@
 
 BACKEND ?= cpu
 SANITIZE ?=
-BUILD ?= $(if $(SANITIZE),build-sanitize,build)
+POISON ?=
+BUILD ?= $(if $(SANITIZE),build-sanitize,$(if $(POISON),build-poison,build))
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 NVCC ?= $(shell command -v nvcc 2>/dev/null || ls /usr/local/cuda/bin/nvcc 2>/dev/null)
 HAVE_GPU := $(shell nvidia-smi -L >/dev/null 2>&1 && echo yes)
@@ -34,6 +36,9 @@ CXXFLAGS := -std=c++17 -O2 -fopenmp $(WARN) -Iinclude -I. -isystem /usr/include/
 # SANITIZE=1: every error is fatal (no recovery), so a sanitizer finding fails the suite.
 SAN_FLAGS := $(if $(SANITIZE),-fsanitize=address$(comma)undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g)
 CXXFLAGS += $(SAN_FLAGS)
+# POISON=1: host buffers start as 0xFF bytes (NaN, -1; exec/space.hpp), as stale GPU memory may
+# be: a read before the first write fails the suite on the CPU too.
+CXXFLAGS += $(if $(POISON),-DBLAZE_POISON_ALLOC)
 LDFLAGS_cpu := -fopenmp $(SAN_FLAGS)
 # EIGEN_NO_CUDA: Eigen is host-only here (shape set-up, references), so it must not mark its
 # functions __host__ __device__ under nvcc.
@@ -109,8 +114,9 @@ ifeq ($(BACKEND),cuda)
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests $(BUILD)/cuda/blaze
 	OMP_NUM_THREADS=$(NPROC) $(call RUN_TESTS,cuda)
-else ifneq ($(SANITIZE),)
-# Sanitized: the suite and the blaze program it runs; no CUDA check (nvcc does not take these flags).
+else ifneq ($(SANITIZE)$(POISON),)
+# Sanitized or poisoned: the suite and the blaze program it runs; no CUDA check (nvcc does not take
+# these flags).
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/blaze_tests $(BUILD)/cpu/blaze
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $(call RUN_TESTS,cpu)

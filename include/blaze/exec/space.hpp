@@ -3,6 +3,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,11 @@ struct Host {
     const std::size_t rounded = (bytes + 63) / 64 * 64;
     void* p = std::aligned_alloc(64, rounded);
     if (!p) throw OutOfMemory("out of host memory: an allocation of " + std::to_string(bytes) + " bytes failed");
+#ifdef BLAZE_POISON_ALLOC
+    // Debug builds (make poison): every byte 0xFF, so a read before the first write is a NaN
+    // (float, double) or -1, as stale GPU memory from an earlier run can be, never a lucky zero.
+    std::memset(p, 0xFF, rounded);
+#endif
     return p;
   }
   static void deallocate(void* p) { std::free(p); }
