@@ -52,6 +52,8 @@ struct ContactForces {
       const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
       if constexpr (Law::kHistory) history.store(s, state);
       sums.template add<has_moment_v<Law, decltype(g)>>(c, g.point - a.body.x);
+      if constexpr (Features::thesis_power)  // the pair is booked from both sides: half each
+        sums.thesis += Real(0.5) * pair_thesis_dissipation<Kinematics, Features>(laws, p, a, j, bj, g, c, dt);
     }
     sums.store(p, stats, i);
   }

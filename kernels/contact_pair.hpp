@@ -73,6 +73,28 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
   }
 }
 
+// The thesis's power estimate of one contact over one step (section 4.1.4.1; energy_ledger.hpp):
+//   |F_diss| |V| dt,  F_diss = -(F_n - F_el(delta)) n + F_t   [J]
+// from the contact's force c on i (F = -F_n n + F_t, contact_law.hpp), its geometry and the
+// relative velocity V at the contact point. An upper bound of the work F_diss . V dt.
+template <class Law, class Real>
+BLAZE_HD_INLINE Real thesis_dissipation(const Law& law, const ContactGeometry<Real>& g, const Vec3<Real>& force,
+                                        const Vec3<Real>& v_rel, Real dt) {
+  const Real f_n = -dot(force, g.normal);
+  const Vec3<Real> f_t = force + g.normal * f_n;
+  const Real damping = f_n - law.normal.elastic_force(g.overlap, g.r_eff);
+  return sqrt_r(damping * damping + norm2(f_t)) * sqrt_r(norm2(v_rel)) * dt;
+}
+
+// The same for a pair of particles (point contacts; a patch is taken at its contact point).
+template <class Kinematics, class Features, class Law, class Real, class Body, class Geometry>
+BLAZE_HD_INLINE Real pair_thesis_dissipation(const PairTable<Law>& laws, const ParticleView<Real>& p, const PairSide<Real, Body>& a,
+                                             Index j, const Body& bj, const Geometry& g, const ContactForce<Real>& c, Real dt) {
+  const Vec3<Real> wj = Features::rotation ? p.angular_velocity.get(j) : Vec3<Real>{0, 0, 0};
+  const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, p.velocity.get(j), wj, g.point - bj.x);
+  return thesis_dissipation(laws(a.material, p.material[j]), static_cast<const ContactGeometry<Real>&>(g), c.force, v_rel, dt);
+}
+
 // Does a contact's force come with a moment (a patch, or a law with rolling resistance)?
 template <class Law, class Geometry>
 inline constexpr bool has_moment_v = is_patch_geometry_v<Geometry> || Law::kRolling;
@@ -85,6 +107,7 @@ struct ContactSums {
   Vec3<Real> f{0, 0, 0}, t{0, 0, 0};
   Index vertex_face = 0, edge_edge = 0;
   Real deepest = 0;
+  Real thesis = 0;  // J, the thesis's estimate over i's contacts this step (Features::thesis_power)
 
   // The contact's kind and overlap (before its force is known).
   BLAZE_HD_INLINE void touch(bool edge, Real overlap) {
@@ -115,6 +138,8 @@ struct ContactSums {
       stats.vertex_face[i] = vertex_face;
       stats.edge_edge[i] = edge_edge;
     }
+    if constexpr (Features::thesis_power)
+      if (p.ledger.thesis_estimate) p.ledger.thesis_estimate[i] += thesis;
   }
 };
 

@@ -55,6 +55,7 @@ struct PairForces {
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
     const Index count = min_r(list.count[i], list.capacity);
+    Real thesis = 0;  // J (Features::thesis_power): the pairs evaluated here, booked whole to i
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       if (j < i) continue;  // j's kernel thread evaluates this pair
@@ -74,7 +75,10 @@ struct PairForces {
       slots.set(slots.force, s, c.force);
       if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>> && Features::rotation) slots.set(slots.moment, s, c.moment);
       if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
+      if constexpr (Features::thesis_power) thesis += pair_thesis_dissipation<Kinematics, Features>(laws, p, a, j, bj, g, c, dt);
     }
+    if constexpr (Features::thesis_power)
+      if (p.ledger.thesis_estimate) p.ledger.thesis_estimate[i] += thesis;
   }
 };
 

@@ -11,6 +11,7 @@
 //   ledger                                the particle's energy accounts since the last reset
 //                                         (drive work, dissipation by contact class;
 //                                         blaze/particles/energy_ledger.hpp), when kept     [J]
+//   thesis_estimate                       the thesis's sum |F_diss| |V| dt, when kept        [J]
 // reduce_in_order (exec/primitives.hpp) folds them deterministically.
 #pragma once
 #include "blaze/exec/launch.hpp"
@@ -23,6 +24,7 @@ struct SampleTally {
   double translational = 0, rotational = 0, potential = 0, mass = 0;  // J, J, J, kg
   double pair_energy = 0, wall_energy = 0;                            // J
   double ledger[kLedgerColumns] = {};                                  // J
+  double thesis_estimate = 0;                                          // J (EnergyLedger::thesis_estimate)
   long long wall_contacts = 0, vertex_face = 0, edge_edge = 0, over = 0;
   double worst = 0;        // overlap / radius
   Index worst_index = -1;  // memory index of the deepest (-1: none above 0)
@@ -31,6 +33,7 @@ struct SampleTally {
     translational += o.translational, rotational += o.rotational, potential += o.potential, mass += o.mass;
     pair_energy += o.pair_energy, wall_energy += o.wall_energy;
     for (int c = 0; c < kLedgerColumns; ++c) ledger[c] += o.ledger[c];
+    thesis_estimate += o.thesis_estimate;
     wall_contacts += o.wall_contacts, vertex_face += o.vertex_face, edge_edge += o.edge_edge, over += o.over;
     if (o.worst > worst || (o.worst == worst && o.worst_index >= 0 && (worst_index < 0 || o.worst_index < worst_index)))
       worst = o.worst, worst_index = o.worst_index;
@@ -62,6 +65,7 @@ struct ParticleTally {
     if (vertex_face) t.vertex_face = vertex_face[i], t.edge_edge = edge_edge[i];
     if (p.ledger.on())
       for (int c = 0; c < kLedgerColumns; ++c) t.ledger[c] = static_cast<double>(p.ledger.column[c][i]);
+    if (p.ledger.thesis_estimate) t.thesis_estimate = static_cast<double>(p.ledger.thesis_estimate[i]);
     if (p.penetration) {
       const double d = static_cast<double>(p.penetration[i]);
       t.over = d > threshold;

@@ -11,6 +11,8 @@
 // column, and adds its force F and torque r x F + M to the class's sums of the particle
 // (EnergyLedger::class_sums, zeroed here every step); the integrator's last kick then books
 // -(F_c . v + T_c . w) dt with the step's final velocities (kernels/integrate.hpp, book_energy).
+// With Features::thesis_power each contact also adds the thesis's estimate |F_diss| |V| dt
+// (contact_pair.hpp, thesis_dissipation).
 #pragma once
 #include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
@@ -48,6 +50,7 @@ struct WorldForces {
     Real deepest = 0;
     unsigned seen = 0;  // slots of objects touched this step
     Real work = 0;      // J, done this step by moving objects on i (energy accounts)
+    Real thesis = 0;    // J, the thesis's estimate over i's wall contacts (Features::thesis_power)
     if (p.ledger.on())
       for (int k = 0; k < kClassSumReals; ++k) p.ledger.class_sums[static_cast<std::size_t>(k) * p.ledger.n + i] = Real(0);
     // Object w (polygons first, then cylinders: the world's object index).
@@ -78,10 +81,12 @@ struct WorldForces {
           return Kinematics::relative(vi, wi, x - body.x, pose ? pose->velocity_at(x) : zero, zero, zero);
         };
         c = contact_patch_force(law, g, v_rel, wi - w_wall, m_eff, state, dt);
+        if constexpr (Features::thesis_power) thesis += thesis_dissipation(law, static_cast<const ContactGeometry<Real>&>(g), c.force, v_rel(g.point), dt);
       } else {
         ContactMotion<Real> m{Kinematics::relative(vi, wi, ri, pose ? pose->velocity_at(g.point) : zero, zero, zero), wi - w_wall, m_eff};
         if constexpr (Law::kRolling) m.inv_rolling_inertia = rolling_term(p, i, ri);  // the wall: I_j infinite
         c = law.evaluate(g, m, state, dt);
+        if constexpr (Features::thesis_power) thesis += thesis_dissipation(law, g, c.force, m.v_rel, dt);
       }
       if constexpr (Law::kHistory)
         if (h >= 0) history.store(h, i, state);
@@ -111,6 +116,8 @@ struct WorldForces {
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
     if (p.ledger.on()) p.ledger.column[kLedgerDrive][i] += work;
+    if constexpr (Features::thesis_power)
+      if (p.ledger.thesis_estimate) p.ledger.thesis_estimate[i] += thesis;
     p.force.set(i, f);
     if constexpr (Features::rotation) p.torque.set(i, p.torque.get(i) + t);
     if constexpr (Features::monitor) p.penetration[i] = max_r(p.penetration[i], deepest / p.radius[i]);

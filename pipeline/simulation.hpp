@@ -108,7 +108,8 @@ class Simulation {
     check_params(params);
     check_materials(laws, world, particles);
     reside_shape();
-    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic() || params.energy_ledger);  // checks the lengths
+    store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic() || params.energy_ledger,
+                  Features::thesis_power);  // checks the lengths
     check_finite(particles, 0);
     world_.upload(world, 0, static_cast<double>(params.dt));
     initial_count_ = store_.size();
@@ -136,7 +137,7 @@ class Simulation {
     store_.restore(snap.store);
     steps_ = snap.steps;
     world_.upload(world, steps_, static_cast<double>(params.dt));
-    if (world.dynamic() || params.energy_ledger) store_.keep_ledger();
+    if (world.dynamic() || params.energy_ledger) store_.keep_ledger(Features::thesis_power);
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;
     removed_mass_ = snap.removed_mass;
@@ -224,6 +225,7 @@ class Simulation {
     double drive_work = 0;       // J, done by moving world objects on the particles
     double dissipated_pair = 0;  // J, taken out by particle-particle contacts
     double dissipated_walls[kContactClasses] = {};  // J, by particle-world contacts, by the object's class
+    double thesis_estimate = 0;  // J, the thesis's sum |F_diss| |V| dt (Features::thesis_power; else 0)
     double dissipated() const {
       double d = dissipated_pair;
       for (double w : dissipated_walls) d += w;
@@ -243,6 +245,7 @@ class Simulation {
     s.drive_work = t.ledger[kLedgerDrive];
     s.dissipated_pair = t.ledger[kLedgerPair];
     for (int c = 0; c < kContactClasses; ++c) s.dissipated_walls[c] = t.ledger[kLedgerWalls + c];
+    s.thesis_estimate = t.thesis_estimate;
     store_.reset_penetration();
     store_.reset_ledger();
     return s;

@@ -12,6 +12,9 @@
 // - A small mill (drum, end plates, lifters) turning steadily: over six revolutions the energy
 //   method (the accounts' sum) and the torque method (the drive's work) agree within 2% (the
 //   issue's energy balance), with every class's share booked where it belongs.
+// - The thesis's estimate sum |F_diss| |V| dt (section 4.1.4.1), kept beside the accounts
+//   (MillStudyFeatures): head on, where the damping force is parallel to V, it is the energy lost;
+//   in the mill it bounds the exact dissipation from above (|F . V| <= |F| |V|).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include "blaze/scene/mill_geometry.hpp"
@@ -28,7 +31,7 @@ const char* const kCase = "Energy accounts by contact class (issue 19)";
 constexpr double kG = 9.81;
 
 template <class Law>
-using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MillStudyFeatures>;
 
 template <class Law>
 SimulationParams<double> ledger_params(double dt, Vec3<double> g, double box, PairEvaluation pairs = PairEvaluation::both_sides) {
@@ -75,6 +78,9 @@ BOOST_AUTO_TEST_CASE(a_head_on_collision_books_the_kinetic_energy_lost_to_the_pa
                    smp.dissipated_pair, expected, tol::ledger_vs_restitution);
     BOOST_TEST(smp.dissipated() == smp.dissipated_pair);  // no wall
     BOOST_TEST(smp.drive_work == 0.0);
+    check_relative({kCase, "head-on pair: the thesis's sum |F_diss| |V| dt vs kinetic energy lost, " + what, "J",
+                    "F_diss parallel to V: |F||V| = F . V"},
+                   smp.thesis_estimate, lost, tol::thesis_estimate_head_on);
   };
   for (double e : {0.3, 0.7, 0.95})
     for (auto pairs : {PairEvaluation::both_sides, PairEvaluation::once}) {
@@ -211,6 +217,11 @@ BOOST_AUTO_TEST_CASE(a_turning_mill_balances_drive_work_and_dissipation) {
                    taken, work, tol::power_methods_agree);
     check_at_most({kCase, std::string("turning mill, ") + name + ": |W - D - dE| / W", "-", "the accounts close the balance"},
                   std::fabs(work - taken - (e_end - e_start)) / work, tol::ledger_balance);
+    check_at_least({kCase, std::string("turning mill, ") + name + ": the thesis's sum |F_diss| |V| dt / energy method", "-",
+                    "an upper bound: |F . V| <= |F| |V|"},
+                   last.thesis_estimate / taken, 1.0);
+    BOOST_TEST_MESSAGE("mill, " << name << ": the thesis's estimate " << last.thesis_estimate / (kRevolutions * period)
+                                << " W against the energy method's " << taken / (kRevolutions * period) << " W");
     BOOST_TEST(last.dissipated_walls[0] == 0.0);  // no plain walls in a mill
     BOOST_TEST(last.dissipated_pair > 0.0);
     BOOST_TEST(last.dissipated_walls[1] > 0.0);

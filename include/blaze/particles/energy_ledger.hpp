@@ -22,6 +22,11 @@
 // off with the thesis's eq. 4.3 friction at mu = 0.5). The force kernels leave the wall classes'
 // F_c, T_c per particle in `class_sums` for it (6 reals per class, 24 per particle, rewritten each
 // step; pairs are the rest of the particle's force and torque).
+// The thesis's own estimate (section 4.1.4.1), kept beside them when the kernels are compiled with
+// Features::thesis_power (study_mill): E = sum over contacts and steps of |F_diss| |V| dt, F_diss
+// the contact's damping force (its normal force less the elastic part) plus its tangential force,
+// V the relative velocity at the contact point (a pair booked half to each side when it is
+// evaluated from both). Not checkpointed: a restored run starts it from zero.
 // This is the energy method of mill power (the thesis's section 4.1.4 sums |F_diss| |v| dt over
 // the dissipative forces, an upper bound of their work: |F . v| <= |F| |v|; the power above is the
 // rate of the same work for any law, history included).
@@ -50,6 +55,7 @@ struct EnergyLedger {
   Real* column[kLedgerColumns];  // null: not kept
   Real* class_sums;              // [(6 c + k) n + i]: F_c then T_c of particle i (k = 0..5)
   Index n;                       // the stride of class_sums
+  Real* thesis_estimate;         // J per particle, the thesis's sum |F_diss| |V| dt; null: not kept
   BLAZE_HD bool on() const { return column[0] != nullptr; }
   BLAZE_HD Real& sum(int c, int k, Index i) const { return class_sums[static_cast<std::size_t>(6 * c + k) * n + i]; }
 };

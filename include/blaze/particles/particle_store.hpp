@@ -54,8 +54,10 @@ template <class Real, class Space>
 class ParticleStore {
  public:
   static constexpr std::size_t kRadiusField = StoreSnapshot<Real>::kRadiusField;
-  // ledger: keep each particle's energy accounts (energy_ledger.hpp).
-  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false, bool ledger = false) {
+  // ledger: keep each particle's energy accounts (energy_ledger.hpp); thesis_estimate: and the
+  // thesis's power estimate beside them.
+  void upload(const ParticleState<Real>& s, bool keep_previous_forces, bool monitor = false, bool ledger = false,
+              bool thesis_estimate = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
     std::vector<Real> inv_m(n_), inv_i(n_);
@@ -87,6 +89,7 @@ class ParticleStore {
     from_host(penetration_, std::vector<Real>(monitor ? n_ : 0, Real(0)));
     for (auto& c : ledger_) from_host(c, std::vector<Real>(ledger ? n_ : 0, Real(0)));
     from_host(class_sums_, std::vector<Real>(ledger ? kClassSumReals * n_ : 0, Real(0)));
+    from_host(thesis_, std::vector<Real>(ledger && thesis_estimate ? n_ : 0, Real(0)));
     scratch_real_.resize(n_);
   }
 
@@ -122,13 +125,15 @@ class ParticleStore {
   void reset_ledger() {
     for (auto& c : ledger_)
       if (c.size()) for_each(Space{}, n_, Fill<Real>{c.data(), Real(0)});
+    if (thesis_.size()) for_each(Space{}, n_, Fill<Real>{thesis_.data(), Real(0)});
   }
   // A restored run that keeps the accounts but whose checkpoint had none, or only the drive's
   // (zero from here).
-  void keep_ledger() {
+  void keep_ledger(bool thesis_estimate = false) {
     for (auto& c : ledger_)
       if (c.size() < static_cast<std::size_t>(n_)) from_host(c, std::vector<Real>(n_, Real(0)));
     from_host(class_sums_, std::vector<Real>(kClassSumReals * static_cast<std::size_t>(n_), Real(0)));
+    from_host(thesis_, std::vector<Real>(thesis_estimate ? n_ : 0, Real(0)));  // not in snapshots: from zero
   }
   bool keeps_ledger() const { return ledger_[0].size() > 0; }
 
@@ -159,6 +164,7 @@ class ParticleStore {
     n_ = static_cast<Index>(s.id.size());
     for (auto& c : ledger_) c.resize(0);
     class_sums_.resize(0);
+    thesis_.resize(0);
     for (std::size_t k = 0; k < s.reals.size(); ++k) {
       if (!s.reals[k].empty() && s.reals[k].size() != s.id.size())
         throw std::invalid_argument("particle snapshot: field " + std::to_string(k) + " has the wrong length");
@@ -212,6 +218,7 @@ class ParticleStore {
     if (penetration_.size()) permute_one(penetration_, scratch_real_, perm);
     for (auto& c : ledger_)
       if (c.size()) permute_one(c, scratch_real_, perm);
+    if (thesis_.size()) permute_one(thesis_, scratch_real_, perm);
   }
 
   // Bytes held per particle (for benchmarks).
@@ -222,7 +229,7 @@ class ParticleStore {
     for (const auto& c : orientation_) b += c.size() * sizeof(Real);
     b += (radius_.size() + inv_mass_.size() + inv_inertia_.size() + scratch_real_.size() + penetration_.size()) * sizeof(Real);
     for (const auto& c : ledger_) b += c.size() * sizeof(Real);
-    b += class_sums_.size() * sizeof(Real);
+    b += (class_sums_.size() + thesis_.size()) * sizeof(Real);
     b += material_.size() + type_.size() + scratch_u8_.size() + (id_.size() + scratch_index_.size()) * sizeof(Index);
     return b;
   }
@@ -235,6 +242,7 @@ class ParticleStore {
     for (int c = 0; c < kLedgerColumns; ++c) l.column[c] = ledger_[c].size() ? ledger_[c].data() : nullptr;
     l.class_sums = class_sums_.size() ? class_sums_.data() : nullptr;
     l.n = static_cast<Index>(class_sums_.size() / kClassSumReals);  // the stride it was sized with
+    l.thesis_estimate = thesis_.size() ? thesis_.data() : nullptr;
     return l;
   }
   static Vec3Field<Real> field(Field3& f) { return {f[0].data(), f[1].data(), f[2].data()}; }
@@ -288,6 +296,7 @@ class ParticleStore {
   Buffer<Real, Space> penetration_;  // Features::monitor only
   Buffer<Real, Space> ledger_[kLedgerColumns];  // energy_ledger.hpp; a moving world, or when asked
   Buffer<Real, Space> class_sums_;  // with the ledger: the walls' force and torque per class, this step
+  Buffer<Real, Space> thesis_;      // with the ledger and Features::thesis_power: sum |F_diss| |V| dt
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Real, Space> scratch_real_;
