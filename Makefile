@@ -15,6 +15,7 @@
 #   make fig-repose        angle of repose, mu_s x mu_r (studies/repose; GPU if present); fig-repose-liggghts: LIGGGHTS side
 #   make table-4.4         the thesis's lab-mill power table (studies/mill), two contact laws -> studies/mill/table-4.4.md
 #   make fig-slice-mill    the slice mill's power and centrifuging layers against speed (studies/mill)
+#   make fig-mill-2d       the 2D mill's toe and shoulder against friction (thesis 4.1.5; GPU)
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
@@ -248,13 +249,19 @@ fig-repose-liggghts: deps
 # plots/fig-mill-power.png (tools/table_4_4.sh; ~10 minutes on 2 CPU cores).
 # make fig-slice-mill: the slice mill of section 4.2.2 at 30-160% of critical speed -> data/mill/slice/,
 # studies/mill/slice-mill.md, plots/fig-slice-mill.png (tools/slice_mill.sh; ~10 minutes on 2 cores).
-.PHONY: table-4.4 fig-slice-mill
+# make fig-mill-2d: the 2D mill of section 4.1.5 (toe and shoulder against friction, Figures 4.3-4.4)
+# -> data/mill/mill_2d/, studies/mill/mill-2d.md, plots/fig-mill-2d.png (tools/mill_2d.sh; a GPU
+# target: 2916 balls against 99 world objects, ~1.3e6 steps per case).
+.PHONY: table-4.4 fig-slice-mill fig-mill-2d
 table-4.4: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/table_4_4.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 fig-slice-mill: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/slice_mill.sh $(BUILD)/$(RUN_BACKEND)/study_mill
+fig-mill-2d: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
+	tools/mill_2d.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk

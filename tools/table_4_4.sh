@@ -9,8 +9,10 @@
 #                  power by 1%) and the Mindlin tangential spring, e = 0.825, mu = 0.15
 # for 20% filling (168 balls) at 14, 22, 32 rpm and 30% (243 balls) at 14 and 22 rpm, five
 # revolutions at full speed (the first skipped). Writes DIR/<law>/<fill>_<rpm>rpm/{power.csv,
-# manifest.txt}, DIR/<law>/scene_*.toml (the scenes run), DIR/power.csv (one row per case, with
-# the experiment's and the thesis's power), studies/mill/table-4.4.md and plots/fig-mill-power.png.
+# manifest.txt}, with the thesis's own estimate sum |F_diss| |V| dt beside the exact methods,
+# DIR/<law>/scene_*.toml (the scenes run), DIR/power.csv (one row per case, with
+# the experiment's and the thesis's power), studies/mill/table-4.4.md, plots/fig-mill-power.png and
+# plots/fig-mill-profile.png (the time-averaged charges of the thesis's Figures 4.9-4.12).
 # Usage: tools/table_4_4.sh STUDY_BINARY [DIR]        (DIR defaults to data/mill/table-4.4)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,7 +25,7 @@ cases="20 14 301 336
 30 14 393 409
 30 22 617 636"
 out="$dir/power.csv"
-echo "law,filling_pc,rpm,experiment_W,thesis_W,torque_method_W,energy_method_W,error_pc,share_pair_pc,share_shell_pc,share_lifter_pc,share_end_plate_pc,wall_time_s" > "$out"
+echo "law,filling_pc,rpm,experiment_W,thesis_W,torque_method_W,energy_method_W,error_pc,share_pair_pc,share_shell_pc,share_lifter_pc,share_end_plate_pc,wall_time_s,thesis_estimate_W" > "$out"
 for law in history_free hertz_mindlin; do
   mkdir -p "$dir/$law"
   for fill in 20 30; do
@@ -51,11 +53,21 @@ law, fill, rpm, exp, thesis = sys.argv[2:7]
 p = float(m["power_W"])
 print(f"{law},{fill},{rpm},{exp},{thesis},{p:.1f},{float(m['energy_method_W']):.1f},{100 * (p - float(exp)) / float(exp):.1f},"
       f"{float(m['share_pair']):.1f},{float(m['share_shell']):.1f},{float(m['share_lifter']):.1f},{float(m['share_end_plate']):.1f},"
-      f"{float(m['wall_time_s']):.1f}")
+      f"{float(m['wall_time_s']):.1f},{float(m['thesis_estimate_W']):.1f}")
 PY
     echo "table-4.4: $law, ${fill}% at $rpm rpm: $(tail -1 "$out")"
   done <<< "$cases"
 done
 python3 tools/table_4_4.py "$out" > studies/mill/table-4.4.md
 gnuplot -e "csv='$out'" plots/mill_power.gp
-echo "wrote $out, studies/mill/table-4.4.md, plots/fig-mill-power.png"
+# the time-averaged charges of the thesis's Figures 4.9-4.12 (history-free), toe and shoulder marked
+args="n=4; cols=2; out='plots/fig-mill-profile.png'; R=0.45; h=0.025; vs=0.04; every=2"
+k=0
+for c in 20:14 20:22 30:14 30:22; do
+  k=$((k + 1)) fill=${c%%:*} rpm=${c##*:} m="$dir/history_free/${fill}pc_${rpm}rpm/manifest.txt"
+  toe=$(sed -n 's/^toe_deg = //p' "$m") shoulder=$(sed -n 's/^shoulder_deg = //p' "$m")
+  args="$args; file$k='$dir/history_free/${fill}pc_${rpm}rpm/charge_field.csv'; sign$k=1; toe$k=$toe; shoulder$k=$shoulder"
+  args="$args; title$k='${fill}% filling, $rpm rpm (history-free): toe $toe, shoulder $shoulder deg'"
+done
+gnuplot -e "$args" plots/mill_profile.gp
+echo "wrote $out, studies/mill/table-4.4.md, plots/fig-mill-power.png, plots/fig-mill-profile.png"

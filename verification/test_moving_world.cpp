@@ -19,6 +19,7 @@
 #include <filesystem>
 #include "blaze/scene/mill_geometry.hpp"
 #include "blaze/sim/centrifuging.hpp"
+#include "blaze/sim/charge_field.hpp"
 #include "blaze/sim/charge_profile.hpp"
 #include "pipeline/run_log.hpp"
 #include "verification/report.hpp"
@@ -411,6 +412,39 @@ BOOST_AUTO_TEST_CASE(centrifuging_balls_and_their_layers) {
     BOOST_TEST(rep.balls == ring1 + ring2 + 1);
     BOOST_TEST(rep.layers == 2);
   }
+}
+
+// The time-averaged charge (include/blaze/sim/charge_field.hpp) of a synthetic drum turning as a
+// rigid body (v = omega x r) about the z axis and about the x axis (gravity -y): every visited
+// cell's mean velocity is omega x r at the balls' mean position, its occupancy the balls per sample;
+// the in-plane axes are u = w x a (right, seen from +a), w up; a ball outside the square is left out.
+BOOST_AUTO_TEST_CASE(charge_field_averages_a_rigid_rotation) {
+  const double R = 0.5, h = 0.05, omega = 2.0;
+  for (const Vec3<double> a : {Vec3<double>{0, 0, 1}, Vec3<double>{1, 0, 0}}) {
+    ChargeField field({0, 0, 0}, a, {0, -9.81, 0}, R, h);
+    const Vec3<double> w_up{0, 1, 0}, u = cross(w_up, a);
+    const int samples = 40;
+    for (int k = 0; k < samples; ++k) {
+      std::vector<Vec3<double>> x, v;
+      for (int b = 0; b < 3; ++b) {  // three balls at a cell centre, 0.325 m right of and 0.225 m below the axis
+        const Vec3<double> p = u * 0.325 + w_up * (-0.225);
+        x.push_back(p), v.push_back(cross(a * omega, p));
+      }
+      x.push_back(u * 0.9), v.push_back({1, 1, 1});  // outside [-R, R]^2
+      field.add(x, v);
+    }
+    BOOST_TEST(field.samples() == samples);
+    const int cell = field.cell_of(0.325, -0.225);
+    BOOST_TEST_REQUIRE(cell >= 0);
+    BOOST_TEST(field.occupancy(cell) == 3.0);
+    const Vec3<double> p = u * 0.325 + w_up * (-0.225), expected = cross(a * omega, p);
+    const Vec3<double> mean = field.mean_velocity(cell);
+    BOOST_TEST(std::fabs(mean.x - dot(expected, u)) < 1e-12);
+    BOOST_TEST(std::fabs(mean.y - dot(expected, w_up)) < 1e-12);
+    BOOST_TEST(field.cell_of(0.9, 0) == -1);
+    BOOST_TEST(field.occupancy(field.cell_of(0, 0)) == 0.0);
+  }
+  BOOST_CHECK_THROW(ChargeField({0, 0, 0}, {0, 0, 1}, {0, -9.81, 0}, 0.5, 0.0), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -13,11 +13,17 @@
 // ball-end plate (the thesis's Table 4.7 split). At steady state the two agree (the charge's energy
 // returns each revolution); both go to the CSV with their ratio. Each revolution also gives the
 // charge's toe and shoulder (include/blaze/sim/charge_profile.hpp: degrees from the bottom of
-// the drum, positive in its direction of rotation) and the balls centrifuging over it, with the
+// the drum, positive in its direction of rotation; from the revolution's 72 samples together) and the balls centrifuging over it, with the
 // layers they make (include/blaze/sim/centrifuging.hpp; positions sampled 72 times a revolution).
+// The samples of the averaged revolutions also give the time-averaged charge in the cross-section
+// (include/blaze/sim/charge_field.hpp: occupancy and mean velocity per cell of one ball radius),
+// written to charge_field.csv for plots/mill_profile.gp, and the mean toe and shoulder.
+// Beside them, the thesis's own estimate (section 4.1.4.1): sum |F_diss| |V| dt over contacts and
+// steps per revolution (MillStudyFeatures; energy_ledger.hpp), an upper bound of the dissipated
+// work, to show what its Table 4.4 measured.
 // Any sphere law of the scene file: the history-free law (the thesis's) or Hertz-Mindlin / the
 // linear spring, with rolling resistance.
-// Writes <output directory>/{power.csv, manifest.txt}; the scene's [output] rows and frames as
+// Writes <output directory>/{power.csv, manifest.txt, charge_field.csv}; the scene's [output] rows and frames as
 // `blaze run` would are not written (use blaze run for those).
 #include <chrono>
 #include <cmath>
@@ -34,6 +40,7 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/sim/centrifuging.hpp"
+#include "blaze/sim/charge_field.hpp"
 #include "blaze/sim/charge_profile.hpp"
 #include "pipeline/simulation.hpp"
 
@@ -42,10 +49,10 @@ using Real = double;
 
 namespace {
 
-template <class Law>
+template <class Law, class Kinematics>
 int run(const Scene& s) {
   static_assert(std::is_same_v<typename Law::real_type, Real>);
-  using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+  using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, Kinematics, MillStudyFeatures>;
   if (!s.mill.present || s.mill.omega == 0) throw SceneError(s.path + ": the mill study needs a [mill] that turns");
   const double skip = s.study_value("skip_revolutions", 0, 1000, "revolutions settled before the power is averaged");
   s.check_study_used();
@@ -63,23 +70,30 @@ int run(const Scene& s) {
   const std::string dir = s.output.directory;
   std::filesystem::create_directories(dir);
   std::ofstream csv(dir + "/power.csv");
-  csv << "revolution,t_end_s,power_W,energy_method_W,pair_W,shell_W,lifter_W,end_plate_W,wall_W,kinetic_J,dissipated_J,"
+  csv << "revolution,t_end_s,power_W,energy_method_W,thesis_estimate_W,pair_W,shell_W,lifter_W,end_plate_W,wall_W,kinetic_J,dissipated_J,"
          "drive_work_J,balls,toe_deg,shoulder_deg,centrifuging_balls,centrifuging_layers\n";
   const auto steps_to = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
   const auto wall0 = std::chrono::steady_clock::now();
   const auto e0_sample = sim.sample(s.output.penetration_warning);  // E(0), the balance's start
   const double e0 = e0_sample.energies.total() + e0_sample.stored.total();
-  double work = 0, work_at = 0, sum = 0, sum_energy = 0, worst = 0;
+  double work = 0, work_at = 0, sum = 0, sum_energy = 0, sum_thesis = 0, worst = 0;
   double by_class[1 + kContactClasses] = {}, class_sum[1 + kContactClasses] = {};  // J: pairs, then the walls' classes
   int averaged = 0, rev = 0;
+  double toe_sum = 0, shoulder_sum = 0;
+  int profiles = 0;
   CentrifugingReport spun;  // the last revolution's (centrifuging.hpp)
+  ChargeField field(s.mill.centre, s.mill.axis, s.gravity, 0.5 * s.mill.diameter, r_max);
   for (double t_end = first; t_end <= s.end_time + 1e-12; t_end += period, ++rev) {
     // the revolution in kSamples parts, the balls' positions sampled at each (centrifuging)
     constexpr int kSamples = 72;
     CentrifugeTracker tracker(s.mill.centre, s.mill.axis, 0.5 * s.mill.diameter, s.mill.omega);
+    // the charge against the shell over the revolution: a band of 1.5 ball diameters (charge_profile.hpp)
+    ChargeProfileSampler band(s.mill.centre, s.mill.axis, 0.5 * s.mill.diameter, 3 * r_max, s.mill.omega > 0 ? 1 : -1);
     const auto track = [&] {
       const auto st = sim.state();
       tracker.add(st.position, st.radius, st.id);
+      band.add(st.position);
+      if (rev > skip) field.add(st.position, st.velocity);
     };
     const double t_start = rev > 0 ? t_end - period : sim.time();
     if (rev > 0) track();
@@ -97,21 +111,20 @@ int run(const Scene& s) {
     if (rev > 0) {
       const double power = (work - work_at) / period;
       const double dissipated = e0 + work - e - sim.removed_energy();
-      // the charge against the shell: a band of 1.5 ball diameters (charge_profile.hpp)
-      const ChargeProfile cp = charge_profile(sim.state().position, s.mill.centre, s.mill.axis, 0.5 * s.mill.diameter,
-                                              3 * r_max, s.mill.omega > 0 ? 1 : -1);
-      const double energy_method = smp.dissipated() / period;
-      csv << rev << ',' << sim.time() << ',' << power << ',' << energy_method;
+      const ChargeProfile cp = band.profile();
+      const double energy_method = smp.dissipated() / period, thesis = smp.thesis_estimate / period;
+      csv << rev << ',' << sim.time() << ',' << power << ',' << energy_method << ',' << thesis;
       for (int c : {0, 1 + static_cast<int>(ContactClass::shell), 1 + static_cast<int>(ContactClass::lifter),
                     1 + static_cast<int>(ContactClass::end_plate), 1 + static_cast<int>(ContactClass::wall)})
         csv << ',' << by_class[c] / period;
       csv << ',' << smp.energies.kinetic() << ',' << dissipated << ',' << work << ',' << sim.size() << ',' << cp.toe_deg << ','
           << cp.shoulder_deg << ',' << spun.balls << ',' << spun.layers << '\n';
-      std::printf("  revolution %3d (t = %6.2f s): %8.2f W (energy method %8.2f W), toe %6.1f deg, shoulder %6.1f deg, "
-                  "%d balls centrifuging in %d layers\n",
-                  rev, sim.time(), power, energy_method, cp.toe_deg, cp.shoulder_deg, spun.balls, spun.layers);
+      std::printf("  revolution %3d (t = %6.2f s): %8.2f W (energy method %8.2f W, thesis's estimate %8.2f W), toe %6.1f deg, "
+                  "shoulder %6.1f deg, %d balls centrifuging in %d layers\n",
+                  rev, sim.time(), power, energy_method, thesis, cp.toe_deg, cp.shoulder_deg, spun.balls, spun.layers);
       if (rev > skip) {
-        sum += power, sum_energy += energy_method, ++averaged;
+        sum += power, sum_energy += energy_method, sum_thesis += thesis, ++averaged;
+        if (cp.found) toe_sum += cp.toe_deg, shoulder_sum += cp.shoulder_deg, ++profiles;
         for (int c = 0; c <= kContactClasses; ++c) class_sum[c] += by_class[c];
       }
     }
@@ -119,34 +132,48 @@ int run(const Scene& s) {
   }
   csv.close();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  const double mean = averaged ? sum / averaged : 0, mean_energy = averaged ? sum_energy / averaged : 0;
+  const double mean = averaged ? sum / averaged : 0, mean_energy = averaged ? sum_energy / averaged : 0,
+               mean_thesis = averaged ? sum_thesis / averaged : 0;
   double taken = 0;
   for (double d : class_sum) taken += d;
   const auto share = [&](int c) { return taken > 0 ? 100 * class_sum[c] / taken : 0.0; };
   const int shell = 1 + static_cast<int>(ContactClass::shell), lifter = 1 + static_cast<int>(ContactClass::lifter),
             plate = 1 + static_cast<int>(ContactClass::end_plate), other = 1 + static_cast<int>(ContactClass::wall);
-  std::printf("power %.2f W by the torque method, %.2f W by the energy method (mean of %d revolutions after %g; ratio %.4f)\n"
+  std::printf("power %.2f W by the torque method, %.2f W by the energy method (mean of %d revolutions after %g; ratio %.4f); "
+              "the thesis's estimate %.2f W\n"
               "dissipated: ball-ball %.1f%%, ball-shell %.1f%%, ball-lifter %.1f%%, ball-end plate %.1f%%, other walls %.1f%%\n"
               "deepest penetration %.3g%% of the radius; %d balls left; wall time %.1f s, %.4g steps/s\n",
-              mean, mean_energy, averaged, skip, mean > 0 ? mean_energy / mean : 0.0, share(0), share(shell), share(lifter),
+              mean, mean_energy, averaged, skip, mean > 0 ? mean_energy / mean : 0.0, mean_thesis, share(0), share(shell), share(lifter),
               share(plate), share(other), 100 * worst, static_cast<int>(sim.size()), wall,
               static_cast<double>(sim.steps()) / wall);
   std::map<std::string, std::string> m;
   char b[64];
   const auto num = [&](double v) { return std::snprintf(b, sizeof b, "%.10g", v), std::string(b); };
   m["scene"] = s.path, m["backend"] = DefaultSpace::name, m["device"] = device_name(DefaultSpace{});
-  m["power_W"] = num(mean), m["energy_method_W"] = num(mean_energy);
+  m["power_W"] = num(mean), m["energy_method_W"] = num(mean_energy), m["thesis_estimate_W"] = num(mean_thesis);
   m["share_pair"] = num(share(0)), m["share_shell"] = num(share(shell)), m["share_lifter"] = num(share(lifter));
   m["share_end_plate"] = num(share(plate)), m["share_other_walls"] = num(share(other));
   m["law"] = std::string(to_string(s.law)) + (s.tangential == TangentialKind::history_free ? " history-free" : " + spring") +
              (s.rolling == RollingKind::none ? "" : " + rolling");
+  m["kinematics"] = std::is_same_v<Kinematics, ThesisMeanOmegaVelocity> ? "thesis mean omega" : "contact point";
   m["revolutions_averaged"] = std::to_string(averaged), m["rpm"] = num(s.mill.omega * 60 / (2 * 3.14159265358979323846));
   m["balls"] = std::to_string(balls.size()), m["dt_s"] = num(s.dt), m["wall_time_s"] = num(wall);
   m["steps_per_s"] = num(static_cast<double>(sim.steps()) / wall);
   m["centrifuging_balls"] = std::to_string(spun.balls), m["centrifuging_layers"] = std::to_string(spun.layers);
+  m["toe_deg"] = num(profiles ? toe_sum / profiles : 0), m["shoulder_deg"] = num(profiles ? shoulder_sum / profiles : 0);
+  field.write_csv(dir + "/charge_field.csv");
   write_manifest(dir + "/manifest.txt", m);
-  std::printf("wrote %s/power.csv, %s/manifest.txt\n", dir.c_str(), dir.c_str());
+  std::printf("wrote %s/power.csv, %s/manifest.txt, %s/charge_field.csv\n", dir.c_str(), dir.c_str(), dir.c_str());
   return sim.removed_count() ? 2 : 0;
+}
+
+template <class Kinematics>
+int dispatch(const Scene& s) {
+  const bool spring = s.tangential != TangentialKind::history_free, linear = s.law == LawKind::linear;
+  if (s.rolling != RollingKind::none)
+    return linear ? run<LinearSpringRollingLaw<Real>, Kinematics>(s) : run<HertzMindlinRollingLaw<Real>, Kinematics>(s);
+  if (linear) return spring ? run<LinearSpringLaw<Real>, Kinematics>(s) : run<LinearLaw<Real>, Kinematics>(s);
+  return spring ? run<HertzMindlinLaw<Real>, Kinematics>(s) : run<HertzLaw<Real>, Kinematics>(s);
 }
 
 }  // namespace
@@ -166,10 +193,11 @@ int main(int argc, char** argv) try {
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the mill study runs in double: precision = \"double\"");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   check_run_fits_here(s);
-  const bool spring = s.tangential != TangentialKind::history_free, linear = s.law == LawKind::linear;
-  if (s.rolling != RollingKind::none) return linear ? run<LinearSpringRollingLaw<Real>>(s) : run<HertzMindlinRollingLaw<Real>>(s);
-  if (linear) return spring ? run<LinearSpringLaw<Real>>(s) : run<LinearLaw<Real>>(s);
-  return spring ? run<HertzMindlinLaw<Real>>(s) : run<HertzLaw<Real>>(s);
+  // [study] thesis_kinematics = 1: the relative velocity with the thesis's mean angular velocity
+  // (section 2.3.1, kinematics.hpp), as its mill runs had it; 0 (default): at the contact point.
+  if (s.study_value_or("thesis_kinematics", 0, 1, "(1: the thesis's mean-omega relative velocity)", 0) != 0)
+    return dispatch<ThesisMeanOmegaVelocity>(s);
+  return dispatch<ContactPointVelocity>(s);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());
   return 1;

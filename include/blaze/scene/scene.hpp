@@ -219,6 +219,12 @@ struct Scene {
       }
     throw SceneError(path + ": [study]: missing key '" + key + "' (a number " + allowed + ")");
   }
+  // The same for an optional key: `fallback` when the table does not have it.
+  double study_value_or(const std::string& key, double lo, double hi, const std::string& unit, double fallback) const {
+    for (const auto& v : study)
+      if (v.key == key) return study_value(key, lo, hi, unit);
+    return fallback;
+  }
   // After a study has read its values: any other [study] key is a typo, an error.
   void check_study_used() const {
     for (const auto& v : study)

@@ -28,53 +28,82 @@ struct ChargeProfile {
   int band_particles = 0;
 };
 
-// rotation_sign: the sign of omega about `axis` (+1: right-handed about it).
+// The band's angular histogram summed over any number of samples (a revolution's: the profile of
+// the time-averaged charge, steadier than one snapshot's); profile() reads the toe and shoulder
+// off it. rotation_sign: the sign of omega about `axis` (+1: right-handed about it).
+class ChargeProfileSampler {
+ public:
+  ChargeProfileSampler(const Vec3<double>& centre, const Vec3<double>& axis, double shell_radius, double band,
+                       double rotation_sign, double bin_deg = 5)
+      : c_(centre), R_(shell_radius), band_(band), sign_(rotation_sign < 0 ? -1 : 1) {
+    a_ = axis * (1 / norm(axis));
+    Vec3<double> down{0, -1, 0};
+    if (std::fabs(dot(down, a_)) > 0.99) down = {1, 0, 0};
+    e1_ = down - a_ * dot(down, a_);
+    e1_ = e1_ * (1 / norm(e1_));
+    e2_ = cross(a_, e1_);  // a right-handed turn about a carries e1 towards e2
+    count_.assign(static_cast<std::size_t>(std::max(4, static_cast<int>(std::lround(360 / bin_deg)))), 0);
+  }
+
+  template <class Real>
+  void add(const std::vector<Vec3<Real>>& x) {
+    const double pi = 3.14159265358979323846;
+    const int bins = static_cast<int>(count_.size());
+    for (const auto& xi : x) {
+      const Vec3<double> r = vec_cast<double>(xi) - c_;
+      const Vec3<double> rho = r - a_ * dot(r, a_);
+      const double d = norm(rho);
+      if (!(d > R_ - band_ && d <= R_)) continue;
+      const double phi = std::atan2(dot(rho, e2_), dot(rho, e1_)) * sign_;  // (-pi, pi]
+      int k = static_cast<int>(std::floor((phi + pi) / (2 * pi) * bins));
+      k = std::min(std::max(k, 0), bins - 1);
+      ++count_[static_cast<std::size_t>(k)];
+      ++band_particles_;
+    }
+  }
+
+  ChargeProfile profile() const {
+    const int bins = static_cast<int>(count_.size());
+    ChargeProfile p;
+    p.band_particles = band_particles_;
+    const long fullest = *std::max_element(count_.begin(), count_.end());
+    if (fullest == 0) return p;
+    // the longest circular run of bins at or above half the fullest
+    int best_start = 0, best_len = 0;
+    for (int s = 0; s < bins; ++s) {
+      const auto dense = [&](int k) { return 2 * count_[static_cast<std::size_t>(((k % bins) + bins) % bins)] >= fullest; };
+      if (!dense(s) || dense(s - 1)) continue;  // runs start after a sparse bin
+      int len = 0;
+      while (len < bins && dense(s + len)) ++len;
+      if (len > best_len) best_len = len, best_start = s;
+    }
+    if (best_len == 0) best_start = 0, best_len = bins;  // every bin dense: no edges
+    const auto angle = [&](int edge) {  // the bin boundary `edge`, in degrees in (-180, 180]
+      double deg = -180 + 360.0 * edge / bins;
+      while (deg <= -180) deg += 360;
+      while (deg > 180) deg -= 360;
+      return deg;
+    };
+    p.found = true;
+    p.toe_deg = angle(best_start);
+    p.shoulder_deg = angle(best_start + best_len);
+    return p;
+  }
+
+ private:
+  Vec3<double> c_, a_, e1_, e2_;
+  double R_, band_, sign_;
+  std::vector<long> count_;
+  int band_particles_ = 0;
+};
+
+// The profile of one sample.
 template <class Real>
 ChargeProfile charge_profile(const std::vector<Vec3<Real>>& x, const Vec3<double>& centre, const Vec3<double>& axis,
                              double shell_radius, double band, double rotation_sign, double bin_deg = 5) {
-  const double pi = 3.14159265358979323846;
-  const Vec3<double> a = axis * (1 / norm(axis));
-  Vec3<double> down{0, -1, 0};
-  if (std::fabs(dot(down, a)) > 0.99) down = {1, 0, 0};
-  Vec3<double> e1 = down - a * dot(down, a);
-  e1 = e1 * (1 / norm(e1));
-  const Vec3<double> e2 = cross(a, e1);  // a right-handed turn about a carries e1 towards e2
-  const int bins = std::max(4, static_cast<int>(std::lround(360 / bin_deg)));
-  std::vector<int> count(static_cast<std::size_t>(bins), 0);
-  ChargeProfile p;
-  for (const auto& xi : x) {
-    const Vec3<double> r = vec_cast<double>(xi) - centre;
-    const Vec3<double> rho = r - a * dot(r, a);
-    const double d = norm(rho);
-    if (!(d > shell_radius - band && d <= shell_radius)) continue;
-    double phi = std::atan2(dot(rho, e2), dot(rho, e1)) * (rotation_sign < 0 ? -1 : 1);  // (-pi, pi]
-    int k = static_cast<int>(std::floor((phi + pi) / (2 * pi) * bins));
-    k = std::min(std::max(k, 0), bins - 1);
-    ++count[static_cast<std::size_t>(k)];
-    ++p.band_particles;
-  }
-  const int fullest = *std::max_element(count.begin(), count.end());
-  if (fullest == 0) return p;
-  // the longest circular run of bins at or above half the fullest
-  int best_start = 0, best_len = 0;
-  for (int s = 0; s < bins; ++s) {
-    const auto dense = [&](int k) { return 2 * count[static_cast<std::size_t>(((k % bins) + bins) % bins)] >= fullest; };
-    if (!dense(s) || dense(s - 1)) continue;  // runs start after a sparse bin
-    int len = 0;
-    while (len < bins && dense(s + len)) ++len;
-    if (len > best_len) best_len = len, best_start = s;
-  }
-  if (best_len == 0) best_start = 0, best_len = bins;  // every bin dense: no edges
-  const auto angle = [&](int edge) {  // the bin boundary `edge`, in degrees in (-180, 180]
-    double deg = -180 + 360.0 * edge / bins;
-    while (deg <= -180) deg += 360;
-    while (deg > 180) deg -= 360;
-    return deg;
-  };
-  p.found = true;
-  p.toe_deg = angle(best_start);
-  p.shoulder_deg = angle(best_start + best_len);
-  return p;
+  ChargeProfileSampler sampler(centre, axis, shell_radius, band, rotation_sign, bin_deg);
+  sampler.add(x);
+  return sampler.profile();
 }
 
 }  // namespace blaze
