@@ -16,6 +16,7 @@
 #   make table-4.4         the thesis's lab-mill power table (studies/mill), two contact laws -> studies/mill/table-4.4.md
 #   make fig-slice-mill    the slice mill's power and centrifuging layers against speed (studies/mill)
 #   make fig-mill-2d       the 2D mill's toe and shoulder against friction (thesis 4.1.5; GPU)
+#   make fig-mill-work-precision  the lab mill's error against wall time over dt and precision
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
 
@@ -252,7 +253,10 @@ fig-repose-liggghts: deps
 # make fig-mill-2d: the 2D mill of section 4.1.5 (toe and shoulder against friction, Figures 4.3-4.4)
 # -> data/mill/mill_2d/, studies/mill/mill-2d.md, plots/fig-mill-2d.png (tools/mill_2d.sh; a GPU
 # target: 2916 balls against 99 world objects, ~1.3e6 steps per case).
-.PHONY: table-4.4 fig-slice-mill fig-mill-2d
+# make fig-mill-work-precision: the 30% / 22 rpm lab mill's power and toe error against wall time
+# for dt = t_c/10 ... t_c/100, float and double, two laws -> data/mill/work_precision/,
+# studies/mill/work-precision.md, plots/fig-mill-work-precision.png (tools/mill_work_precision.sh).
+.PHONY: table-4.4 fig-slice-mill fig-mill-2d fig-mill-work-precision
 table-4.4: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/table_4_4.sh $(BUILD)/$(RUN_BACKEND)/study_mill
@@ -262,6 +266,9 @@ fig-slice-mill: deps
 fig-mill-2d: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/mill_2d.sh $(BUILD)/$(RUN_BACKEND)/study_mill
+fig-mill-work-precision: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
+	tools/mill_work_precision.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 
 # make bench-compare: the CPU backend against LIGGGHTS on the same scene (bench/compare/README.md).
 include bench/compare/compare.mk

@@ -188,6 +188,11 @@ BOOST_AUTO_TEST_CASE(study_values_wall_names_and_rim_edges) {
   const std::string range = rejection([&] { s.study_value("settle", 0, 1, "s"); });
   BOOST_TEST(has(range, "[study]: key 'settle' = 2: must be in [0, 1] s"), range);
   BOOST_TEST(has(rejection([&] { s.study_value("missing", 0, 1, "s"); }), "[study]: missing key 'missing'"));
+  // an optional key: its fallback when absent, the same range check when present
+  BOOST_TEST(s.study_value_or("missing", 0, 1, "s", 0.75) == 0.75);
+  const std::string optional = rejection([&] { s.study_value_or("settle", 0, 1, "(0 or 1)", 0); });
+  BOOST_TEST(has(optional, "scene.toml:" + std::to_string(line_of(text, "settle = 2")) + ": [study]: key 'settle' = 2: must be in [0, 1]"),
+             optional);
   const Scene o = parse_scene(text, "scene.toml", {"gate_open_time=0.25"});  // a bare key found in [study]
   BOOST_TEST(o.study_value("gate_open_time", 0, 1, "s") == 0.25);
   BOOST_TEST(has(rejection([&] { parse_scene(kBase + "[study]\nx = \"a\"\n", "scene.toml"); }), "[study]: key 'x' = \"a\": a number"));

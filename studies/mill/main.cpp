@@ -45,13 +45,12 @@
 #include "pipeline/simulation.hpp"
 
 using namespace blaze;
-using Real = double;
 
 namespace {
 
 template <class Law, class Kinematics>
 int run(const Scene& s) {
-  static_assert(std::is_same_v<typename Law::real_type, Real>);
+  using Real = typename Law::real_type;  // the study's own sums are double
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, Kinematics, MillStudyFeatures>;
   if (!s.mill.present || s.mill.omega == 0) throw SceneError(s.path + ": the mill study needs a [mill] that turns");
   const double skip = s.study_value("skip_revolutions", 0, 1000, "revolutions settled before the power is averaged");
@@ -60,7 +59,8 @@ int run(const Scene& s) {
   const double first = s.mill.start + s.mill.ramp;  // revolutions count from full speed
   double r_max = 0;
   for (const auto& t : s.types) r_max = std::max(r_max, t.size());
-  const SimulationParams<Real> sp{s.dt, s.gravity, s.domain_lo, s.domain_hi, s.skin * r_max, s.drag};
+  const SimulationParams<Real> sp{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
+                                  vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag)};
   const ParticleState<Real> balls = build_particles<Real>(s, nullptr);
   Sim sim(sp, build_laws<Law>(s), build_world<Real>(s), balls);
   std::printf("mill: %zu balls, D = %.3g m, L = %.3g m, %.4g rpm (T = %.4g s), dt = %.3g s (%.3f of the critical step)\n"
@@ -171,9 +171,21 @@ template <class Kinematics>
 int dispatch(const Scene& s) {
   const bool spring = s.tangential != TangentialKind::history_free, linear = s.law == LawKind::linear;
   if (s.rolling != RollingKind::none)
-    return linear ? run<LinearSpringRollingLaw<Real>, Kinematics>(s) : run<HertzMindlinRollingLaw<Real>, Kinematics>(s);
-  if (linear) return spring ? run<LinearSpringLaw<Real>, Kinematics>(s) : run<LinearLaw<Real>, Kinematics>(s);
-  return spring ? run<HertzMindlinLaw<Real>, Kinematics>(s) : run<HertzLaw<Real>, Kinematics>(s);
+    return linear ? run<LinearSpringRollingLaw<double>, Kinematics>(s) : run<HertzMindlinRollingLaw<double>, Kinematics>(s);
+  if (linear) return spring ? run<LinearSpringLaw<double>, Kinematics>(s) : run<LinearLaw<double>, Kinematics>(s);
+  return spring ? run<HertzMindlinLaw<double>, Kinematics>(s) : run<HertzLaw<double>, Kinematics>(s);
+}
+
+// In float, the two laws of make fig-mill-work-precision: the history-free linear law and
+// Hertz-Mindlin, at the contact point (each float law is another instantiation of the whole step).
+int dispatch_float(const Scene& s) {
+  const bool spring = s.tangential != TangentialKind::history_free, linear = s.law == LawKind::linear;
+  if (s.rolling == RollingKind::none && linear && !spring) return run<LinearLaw<float>, ContactPointVelocity>(s);
+  if (s.rolling == RollingKind::none && !linear && s.tangential == TangentialKind::mindlin)
+    return run<HertzMindlinLaw<float>, ContactPointVelocity>(s);
+  throw SceneError(s.place("simulation.precision") +
+                   " = \"float\": the mill study runs float for the history-free linear law and Hertz-Mindlin only "
+                   "(no rolling resistance); use \"double\"");
 }
 
 }  // namespace
@@ -190,14 +202,16 @@ int main(int argc, char** argv) try {
   }
   const Scene s = load_scene(path, overrides);
   if (!s.all_spheres()) throw SceneError(path + ": the mill study takes spheres only");
-  if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the mill study runs in double: precision = \"double\"");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   check_run_fits_here(s);
   // [study] thesis_kinematics = 1: the relative velocity with the thesis's mean angular velocity
   // (section 2.3.1, kinematics.hpp), as its mill runs had it; 0 (default): at the contact point.
-  if (s.study_value_or("thesis_kinematics", 0, 1, "(1: the thesis's mean-omega relative velocity)", 0) != 0)
-    return dispatch<ThesisMeanOmegaVelocity>(s);
-  return dispatch<ContactPointVelocity>(s);
+  const bool mean_omega = s.study_value_or("thesis_kinematics", 0, 1, "(1: the thesis's mean-omega relative velocity)", 0) != 0;
+  if (s.precision == PrecisionKind::float32) {
+    if (mean_omega) throw SceneError(s.path + ": [study]: thesis_kinematics = 1 runs in double only (precision = \"double\")");
+    return dispatch_float(s);
+  }
+  return mean_omega ? dispatch<ThesisMeanOmegaVelocity>(s) : dispatch<ContactPointVelocity>(s);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());
   return 1;
