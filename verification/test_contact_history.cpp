@@ -249,6 +249,41 @@ BOOST_AUTO_TEST_CASE(the_two_sides_of_a_spring_stay_mirrored) {
   }
 }
 
+// A Mindlin spring so weak that |F_e|^2 delta underflows in float, unloading: its rescaling
+// k_t(delta) / k_t(delta_prev) was 0/0, and the NaN stopped a float Hertz-Mindlin mill at its 71st
+// step (make fig-mill-work-precision, 2026-12-02). Swept over the stored force (1e-8 .. 1e-24 N)
+// and the overlap (1e-10 .. 1e-4 m), in float and double: the force is finite and within the
+// Coulomb limit, the state finite.
+template <class Real>
+void weak_springs_stay_finite() {
+  const double g_star = TangentialSpring<double>::effective_shear_modulus(2e9, 0.3, 2e9, 0.3);
+  const auto spring = TangentialSpring<Real>::mindlin(0.5, g_star, 0.8);
+  long cases = 0;
+  for (int a = 8; a <= 24; ++a)
+    for (int b = 4; b <= 10; ++b)
+      for (double v_n : {-1e-3, 0.0, 1e-3}) {
+        const double fe = std::pow(10.0, -a), delta = std::pow(10.0, -b);
+        ContactState<Real, 3> state = ContactState<Real, 3>::zero();
+        state.set(0, Vec3<Real>{static_cast<Real>(fe), 0, static_cast<Real>(0.5 * fe)});
+        const TangentialInput<Real> in{{0, 1, 0}, static_cast<Real>(delta), Real(0.0125), {Real(1e-6), 0, 0}, static_cast<Real>(v_n),
+                                       static_cast<Real>(1e-3), Real(0.25), Real(1e-6)};
+        const TangentialForce<Real> t = spring.force(in, state, 0);
+        const Vec3<Real> kept = state.vec(0);
+        const bool finite = std::isfinite(t.force.x) && std::isfinite(t.force.y) && std::isfinite(t.force.z) &&
+                            std::isfinite(kept.x) && std::isfinite(kept.y) && std::isfinite(kept.z);
+        BOOST_TEST(finite, "F_e " << fe << " N, delta " << delta << " m, v_n " << v_n << ": force (" << t.force.x << ", "
+                                  << t.force.y << ", " << t.force.z << ")");
+        BOOST_TEST(static_cast<double>(norm(t.force)) <= 0.5 * 1e-3 * (1 + 1e-5));
+        ++cases;
+      }
+  BOOST_TEST(cases == 17 * 7 * 3);
+}
+
+BOOST_AUTO_TEST_CASE(a_spring_too_weak_for_float_stays_finite) {
+  weak_springs_stay_finite<float>();
+  weak_springs_stay_finite<double>();
+}
+
 // 6. Energy with the spring (issue 18, item 6): an elastic (e = 1: no dashpot, no tangential
 // damping) Hertz-Mindlin sphere striking a plane obliquely. Its kinetic + rotational + stored
 // (normal and tangential spring) energy may only fall (Coulomb sliding dissipates): the spring

@@ -125,7 +125,10 @@ struct TangentialSpring {
           num *= kt * kt, den *= before * before;
         }
       }
-      fe *= sqrt_r(num / den);
+      // A spring so weak that |F_e|^2 delta_prev underflows (float: |F_e| below ~1e-17 N at
+      // micrometre overlaps) is dropped, not turned into 0/0 = NaN.
+      if (den > Real(0)) fe *= sqrt_r(num / den);
+      else fe = Vec3<Real>{0, 0, 0};
     }
     fe -= in.v_t * (kt * in.dt);
     const Vec3<Real> damping = in.v_t * (beta * sqrt_r(kt * in.m_eff));  // c_t v_t
