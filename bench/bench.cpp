@@ -14,7 +14,7 @@
 // are kept, this run's added after them). Options: --out DIR, --skin S
 // (skin in radii, default 0.2), --pairs auto|both_sides|once (SimulationParams::pairs; auto:
 // polyhedra once, spheres from both sides), --min-n N, --max-n N, --tag TAG, --cases
-// spheres,polyhedra,packed,surfaces,skip,mill,largest (default all but largest).
+// spheres,polyhedra,packed,surfaces,skip,mill,lifters,largest (default all but largest and lifters).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -211,6 +211,13 @@ int main(int argc, char** argv) {
     rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000));
     rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000, true));
     print_rows(rows, rows.size() - 2);
+  }
+  if (wanted("lifters")) {  // world kernel cost against lifter rows, lists on (automatic) and off
+    const std::size_t first = rows.size();
+    for (int lifter_rows : {0, 8, 16, 32, 64})
+      for (WorldLists lists : {WorldLists::automatic, WorldLists::off})
+        rows.push_back(mill_case(gpu ? 10000 : 2000, gpu ? 20000 : 1000, true, lifter_rows, lists));
+    print_rows(rows, first);
   }
   write_csv(file, earlier, rows, at);
   std::printf("\n%-9s %-12s %-6s %-6s %11s", "N", "shape", "law", "prec", "p-steps/s");

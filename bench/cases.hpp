@@ -243,7 +243,10 @@ Row skip_case(const char* label, long n, long warmup, long steps) {
 // over the warm-up, then the bed is timed. turning: the mill of `make` studies (issue 19), its
 // shell, end plates and eight 4 cm square lifters ([mill], mill_geometry.hpp) turning at 32 rpm
 // (ramped over 0.2 s); otherwise the static drum of issue 6 (the thesis's 1.06e5 steps/s row).
-inline Row mill_case(long warmup, long steps, bool turning = false) {
+// lifter_rows (turning only): the lifter-count sweep (--cases lifters, issue 19's world-kernel row):
+// 0-64 rows of 4 cm x 2 cm bars (8 rows keep the 4 cm square bars), with the world lists as
+// `blaze run` picks them (automatic) or off.
+inline Row mill_case(long warmup, long steps, bool turning = false, int lifter_rows = 8, WorldLists lists = WorldLists::automatic) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   using V = Vec3<double>;
   const double r = 0.025, rho = 7800, drum_r = 0.45, length = 0.15, dt = 4.14e-5;
@@ -268,20 +271,24 @@ inline Row mill_case(long warmup, long steps, bool turning = false) {
     MillSpec m;
     m.centre = {0, 0, 0.5 * length}, m.axis = {0, 0, 1}, m.diameter = 2 * drum_r, m.length = length;
     m.omega = 32 * 2 * kPi / 60, m.ramp = 0.2;
-    m.lifters.push_back({8, 0.04, 0.04, 0, 22.5});
+    if (lifter_rows > 0) m.lifters.push_back({lifter_rows, 0.04, lifter_rows == 8 ? 0.04 : 0.02, 0, 22.5});
     world = World<float>{};
     world.cylinders.push_back(Cylinder<float>::make(V{0, 0, 0}, V{0, 0, 1}, drum_r, length, 1));
     for (const MillWall& w : mill_walls(m)) world.polygons.push_back(PlanarPolygon<float>::make(w.vertices, 1, w.rim_edges));
     for (int k = 0; k < world.object_count(); ++k) world.set_motion(k, mill_motion(m));
   }
-  const SimulationParams<float> params{float(dt), {0, -9.81f, 0}, {-0.5f, -0.5f, -0.05f}, {0.5f, 0.5f, 0.2f},
+  SimulationParams<float> params{float(dt), {0, -9.81f, 0}, {-0.5f, -0.5f, -0.05f}, {0.5f, 0.5f, 0.2f},
                                        float(g_skin_fraction * r), 0, pairs_for(false)};
+  params.world_lists = lists;
   const Law law{LinearSpringDashpot<float>::from_restitution(2e6, 0.825), HistoryFreeFriction<float>::make(0.15, 100)};
   PairTable<Law> laws;
   laws.set(0, 0, law);
   laws.set(0, 1, law);
   Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(params, laws, world, balls);
-  Row row = measure(sim, "mill-242", "linear", "float", turning ? "mill-turning" : "mill", world.object_count(), warmup, steps);
+  std::string scene = turning ? "mill-turning" : "mill";
+  if (turning && (lifter_rows != 8 || lists != WorldLists::automatic))
+    scene = "mill-lifters" + std::to_string(lifter_rows) + (lists == WorldLists::off ? "-nolists" : "");
+  Row row = measure(sim, "mill-242", "linear", "float", scene.c_str(), world.object_count(), warmup, steps);
   if (sim.removed_count() != 0) std::printf("WARNING: %d balls left the mill\n", static_cast<int>(sim.removed_count()));
   return row;
 }

@@ -121,13 +121,16 @@ struct BuildReverse {
   }
 };
 
-// 1 if particle i moved more than half the skin since the last build, or left the domain.
+// 1 if particle i moved more than half the skin since the last build, or left the domain, or
+// the world's moving objects have moved as far as the world lists allow (world_candidates.hpp).
 template <class Real>
 struct NeedsRebuild {
   GridSpec<Real> grid;
   Vec3Field<Real> position;
   Vec3Field<Real> reference;
   Real half_skin_squared;
+  const std::uint64_t* world_step = nullptr;  // the step the world's poses are for; null: no lists to keep
+  std::uint64_t world_valid_until = ~std::uint64_t{0};  // the last step the lists hold for
   // 0: list still valid; 1: particle i moved half the skin or left the grid; 2: its position is
   // not finite (NaN or Inf). The step's one reduction thus doubles as the NaN guard at no extra
   // load: a NaN force or velocity reaches the position at the next drift, which this check follows
@@ -139,6 +142,7 @@ struct NeedsRebuild {
     if (half_skin_squared < Real(0)) return 1;  // first build: no reference positions yet
     int cx, cy, cz;
     if (!grid.cell_of(x, cx, cy, cz)) return 1;
+    if (world_step && *world_step > world_valid_until) return 1;
     return norm2(x - reference.get(i)) > half_skin_squared ? 1 : 0;
   }
 };

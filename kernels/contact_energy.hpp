@@ -65,9 +65,7 @@ struct StoredContactEnergy {
       walls += laws(mi, material).stored_energy(g, state);
       ++touched;
     };
-    int w = 0;
-    for (int k = 0; k < world.polygon_count; ++k, ++w) wall(shape.collide_world(bi, world.polygons[k]), world.polygons[k].material, w);
-    for (int k = 0; k < world.cylinder_count; ++k, ++w) wall(shape.collide_world(bi, world.cylinders[k]), world.cylinders[k].material, w);
+    world.visit(i, [&](const auto& object, int w) { wall(shape.collide_world(bi, object), object.material, w); });
     out.pairs[i] = pairs;
     out.walls[i] = walls;
     out.wall_contacts[i] = touched;

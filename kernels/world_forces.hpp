@@ -2,7 +2,8 @@
 // torque. Walls have infinite mass: m_eff = m_i. A moving object (blaze/world/motion.hpp; its
 // pose placed by the move-world phase) enters the contact through its velocity at the contact
 // point, v_w = omega x (x - o) + u', in the relative velocity (and omega in the rolling laws'
-// relative spin). A removed object is skipped. A contact with a patch (contact_patch.hpp) adds the
+// relative spin). A removed object is skipped; with world lists (world_candidates.hpp) only the
+// objects in the particle's list are tested. A contact with a patch (contact_patch.hpp) adds the
 // patch's moment about the contact point to the torque. A law with history keeps each wall
 // contact's state in a slot of the particle keyed by the object (contact_history.hpp): found or
 // claimed when touching, freed when the contact opens.
@@ -108,11 +109,7 @@ struct WorldForces {
         p.ledger.sum(cls, 3, i) += tc.x, p.ledger.sum(cls, 4, i) += tc.y, p.ledger.sum(cls, 5, i) += tc.z;
       }
     };
-    int w = 0;
-    for (int k = 0; k < world.polygon_count; ++k, ++w)
-      if (!world.pose || world.pose[w].active) apply(shape.collide_world(body, world.polygons[k]), world.polygons[k].material, w);
-    for (int k = 0; k < world.cylinder_count; ++k, ++w)
-      if (!world.pose || world.pose[w].active) apply(shape.collide_world(body, world.cylinders[k]), world.cylinders[k].material, w);
+    world.visit(i, [&](const auto& object, int w) { apply(shape.collide_world(body, object), object.material, w); });
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
     if (p.ledger.on()) p.ledger.column[kLedgerDrive][i] += work;

@@ -46,11 +46,13 @@ class BroadPhase {
     return builds_ == 0 && code == 0 ? 1 : code;
   }
 
-  // The same check as a functor (fused steps), after the first build only.
-  NeedsRebuild<Real> rebuild_check_functor(ParticleStore<Real, Space>& store) {
+  // The same check as a functor (fused steps), after the first build only; it also trips when
+  // *world_step passes world_valid_until (world lists: pipeline/world_candidates.hpp).
+  NeedsRebuild<Real> rebuild_check_functor(ParticleStore<Real, Space>& store, const std::uint64_t* world_step = nullptr,
+                                           std::uint64_t world_valid_until = ~std::uint64_t{0}) {
     if (builds_ == 0) throw std::logic_error("broad phase: the rebuild check needs a first build");
     const Real h = Real(0.5) * skin_;
-    return {grid_, store.view().position, field(reference_), h * h};
+    return {grid_, store.view().position, field(reference_), h * h, world_step, world_valid_until};
   }
 
   // with_forces: also move force and torque (a rebuild between steps, for a checkpoint).

@@ -15,6 +15,7 @@
 #include "blaze/exec/phases.hpp"
 #include "pipeline/broad_phase.hpp"
 #include "pipeline/contact_store.hpp"
+#include "pipeline/world_candidates.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/sim/snapshot.hpp"
 #include "blaze/world/world.hpp"
@@ -49,6 +50,8 @@ struct SimulationParams {
   // Keep the energy accounts (blaze/particles/energy_ledger.hpp: the drive's work and the
   // dissipation by contact class) even in a still world; a world that moves keeps them anyway.
   bool energy_ledger = false;
+  // Per-particle lists of the world objects in reach (pipeline/world_candidates.hpp).
+  WorldLists world_lists = WorldLists::automatic;
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
@@ -112,6 +115,7 @@ class Simulation {
                   Features::thesis_power);  // checks the lengths
     check_finite(particles, 0);
     world_.upload(world, 0, static_cast<double>(params.dt));
+    lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
     initial_count_ = store_.size();
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     configure_contacts(world);
@@ -137,6 +141,7 @@ class Simulation {
     store_.restore(snap.store);
     steps_ = snap.steps;
     world_.upload(world, steps_, static_cast<double>(params.dt));
+    lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
     if (world.dynamic() || params.energy_ledger) store_.keep_ledger(Features::thesis_power);
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;
@@ -250,6 +255,8 @@ class Simulation {
     store_.reset_ledger();
     return s;
   }
+  // The world lists (pipeline/world_candidates.hpp): on or off, builds, validity, overflow.
+  const WorldCandidates<Real, Space>& world_lists() const { return lists_; }
   // The world moves or loses objects at set times (blaze/world/motion.hpp).
   bool world_moves() const { return world_.dynamic(); }
   // The particles keep energy accounts (a world that moves, or SimulationParams::energy_ledger).
@@ -306,7 +313,7 @@ class Simulation {
   std::size_t memory_bytes() const {
     std::size_t slots = slot_state_.size() + slot_overlap_.size() * sizeof(Real);
     for (const auto& b : slot_reals_) slots += b.size() * sizeof(Real);
-    return store_.bytes() + broad_.bytes() + slots + contacts_.bytes();
+    return store_.bytes() + broad_.bytes() + slots + contacts_.bytes() + lists_.bytes();
   }
 
  private:
@@ -364,7 +371,7 @@ class Simulation {
     auto phases = make_phases(
         kernel_phase("move-world", MoveWorld<Real>{world_.motion_view(), store_.size()}, world_.dynamic()),
         kernel_phase("integrate", integrate<Stage::pre_force>()),
-        check_phase("rebuild-check", broad_.rebuild_check_functor(store_)),
+        check_phase("rebuild-check", broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until())),
         kernel_phase("contacts", contact_forces(history_dt), !once),
         kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt}, once),
         kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats()}, once),
@@ -396,6 +403,7 @@ class Simulation {
   // with_forces: force and torque move too (between steps).
   void rebuild(bool with_forces) {
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity, with_forces));
+    build_world_lists();
     if constexpr (Law::kHistory)
       timer_.time("neighbours", [&] {
         contacts_.after_rebuild(broad_.neighbours(), broad_.previous_neighbours(), broad_.order(), store_.size(),
@@ -447,7 +455,16 @@ class Simulation {
   void first_build() {
     if (broad_.rebuild_check(store_) == 2) throw_non_finite(steps_);
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
+    build_world_lists();
     contacts_.clear(broad_.neighbours(), store_.size());
+  }
+  // The world lists for the particles as the rebuild left them and the world as it stands (a
+  // moving world's step read back: mid-step it is one ahead of steps_).
+  void build_world_lists() {
+    if (!lists_.on()) return;
+    const std::uint64_t* counter = world_.step_counter();
+    const std::uint64_t step = counter ? read_one(counter, Space{}) : steps_;
+    timer_.time("world-lists", [&] { lists_.build(store_.view(), world_.view(), step); });
   }
   template <class Removed>
   void apply_removal(const Removed& removed) {
@@ -492,7 +509,7 @@ class Simulation {
         b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
       energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
       const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
-      for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), world_.view(), laws_,
+      for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), lists_.attach(world_.view()), laws_,
                                                            slots, contacts_.pairs(), contacts_.walls()});
       f.pair_energy = energy_pairs_.data(), f.wall_energy = energy_walls_.data(), f.wall_contacts = energy_wall_contacts_.data();
     }
@@ -523,7 +540,7 @@ class Simulation {
     return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), history_dt};
   }
   WorldForces<Shape, Law, Kinematics, Features> world_forces(Real history_dt) {
-    return {shape_, store_.view(), world_.view(), laws_, contacts_.walls(), history_dt};
+    return {shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), history_dt};
   }
 
   // Pairs once: the slots, one per list entry (grown with the list, never shrunk).
@@ -569,6 +586,7 @@ class Simulation {
   ParticleStore<Real, Space> store_;
   ContactStore<Real, Law::State::kReals, Space> contacts_;  // laws with history (contact_store.hpp)
   WorldStore<Real, Space> world_;
+  WorldCandidates<Real, Space> lists_;  // world lists (empty when off)
   BroadPhase<Real, Space> broad_;
   PhaseTimer<Space> timer_;
   Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)

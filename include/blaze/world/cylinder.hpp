@@ -43,4 +43,16 @@ BLAZE_HD inline ContactGeometry<Real> collide_sphere(const Vec3<Real>& x, Real r
   return {true, n, delta, x + n * (r - Real(0.5) * delta), r * c.radius / (c.radius - r)};
 }
 
+// The cylinder's wall (its points at the radius, 0 <= s <= length) lies within `reach` of x: the
+// candidate test of the world lists (kernels/world_candidates.hpp), conservative like
+// planar_polygon.hpp's within_reach.
+template <class Real>
+BLAZE_HD inline bool within_reach(const Vec3<Real>& x, Real reach, const Cylinder<Real>& c) {
+  const Vec3<Real> rel = x - c.origin;
+  const Real s = dot(rel, c.axis);
+  if (!(s >= -reach && s <= c.length + reach)) return false;
+  const Real rho = sqrt_r(norm2(rel - s * c.axis));
+  return rho + reach >= c.radius;
+}
+
 }  // namespace blaze

@@ -110,7 +110,8 @@ BLAZE_HD Pose<Real> pose_at(const Motion& m, double t) {
 }
 
 // The fastest a point of an object moves (m/s), over `points` of it (its vertices; a cylinder's
-// rim): |omega| times the farthest from the axis, |V|, or 2 pi f A (the ramps only approach these).
+// rim): |omega| times the farthest from the axis, |V| (the ramps only approach these), or
+// A (2 pi f + 1 / T_r) for a vibration (its ramp adds A r'(s) sin to u'; 2 pi f A without one).
 inline double peak_speed(const Motion& m, const std::vector<Vec3<double>>& points) {
   switch (m.kind) {
     case MotionKind::rotation: {
@@ -122,7 +123,8 @@ inline double peak_speed(const Motion& m, const std::vector<Vec3<double>>& point
       return std::fabs(m.omega) * reach;
     }
     case MotionKind::translation: return norm(m.velocity);
-    case MotionKind::vibration: return 2 * 3.14159265358979323846 * m.frequency * m.amplitude;
+    case MotionKind::vibration:
+      return m.amplitude * (2 * 3.14159265358979323846 * m.frequency + (m.ramp > 0 ? 1 / m.ramp : 0));
     case MotionKind::none: return 0;
   }
   return 0;

@@ -115,4 +115,22 @@ BLAZE_HD inline ContactGeometry<Real> collide_sphere(const Vec3<Real>& x, Real r
   return {true, n, delta, x + n * (r - Real(0.5) * delta), r};
 }
 
+// Some point of the polygon (a closed set) lies within `reach` of x: the candidate test of the
+// world lists (kernels/world_candidates.hpp). Any body inside the sphere (x, r) that touches the
+// wall after x and the wall have each moved at most m passes it with reach = r + 2 m.
+template <class Real>
+BLAZE_HD inline bool within_reach(const Vec3<Real>& x, Real reach, const PlanarPolygon<Real>& w) {
+  const Real d = dot(x - w.centroid, w.normal);
+  if (!(d <= reach && d >= -reach)) return false;
+  const Vec3<Real> q = x - d * w.normal;
+  if (w.contains(q)) return true;
+  for (int k = 0; k < w.vertex_count; ++k) {
+    const Vec3<Real> a = w.vertex[k];
+    const Vec3<Real> e = w.vertex[k + 1 < w.vertex_count ? k + 1 : 0] - a;
+    const Real t = clamp_r(dot(x - a, e) / norm2(e), Real(0), Real(1));
+    if (norm2(x - (a + t * e)) <= reach * reach) return true;
+  }
+  return false;
+}
+
 }  // namespace blaze

@@ -5,6 +5,7 @@
 // (kernels/move_world.hpp) places the current geometry and records the pose; the world kernel
 // reads the pose for the wall's velocity at a contact and skips objects that were removed.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,33 @@ struct World {
   Motion motion(int object) const {
     return static_cast<std::size_t>(object) < motions.size() ? motions[static_cast<std::size_t>(object)] : Motion{};
   }
+  // A bound on how fast the object's surface moves (m/s): the peak speed of its points
+  // (motion.hpp), over a polygon's vertices (the farthest from any axis, as it is convex) or, for
+  // a cylinder, its centre's distance from the axis plus its half-diagonal; 0 for a cylinder
+  // turning about its own axis (its surface stays where it is).
+  double surface_speed(int object) const {
+    const Motion m = motion(object);
+    if (!m.moves()) return 0;
+    const auto np = static_cast<int>(polygons.size());
+    if (object < np) {
+      const PlanarPolygon<Real>& g = polygons[static_cast<std::size_t>(object)];
+      std::vector<Vec3<double>> v;
+      for (int k = 0; k < g.vertex_count; ++k) v.push_back(vec_cast<double>(g.vertex[k]));
+      return peak_speed(m, v);
+    }
+    const Cylinder<Real>& c = cylinders[static_cast<std::size_t>(object - np)];
+    const Vec3<double> a = vec_cast<double>(c.axis), o = vec_cast<double>(c.origin);
+    const double r = static_cast<double>(c.radius), l = static_cast<double>(c.length);
+    if (m.kind == MotionKind::rotation) {
+      const Vec3<double> off = m.point - o;
+      const double tilt = norm(cross(m.axis, a)), miss = norm(off - a * dot(off, a));
+      if (tilt <= 1e-12 && miss <= 1e-12 * r) return 0;
+    }
+    const Vec3<double> centre = o + a * (0.5 * l);
+    const double half_diagonal = std::sqrt(r * r + 0.25 * l * l);
+    if (m.kind != MotionKind::rotation) return peak_speed(m, {centre});
+    return peak_speed(m, {centre}) + std::fabs(m.omega) * half_diagonal;
+  }
 };
 
 // The reference geometry placed by a pose.
@@ -86,6 +114,11 @@ World<Real> placed(const World<Real>& ref, const std::vector<Pose<Real>>& poses)
   return w;
 }
 
+// World lists (kernels/world_candidates.hpp): at most this many objects per particle; a particle
+// that reaches more is marked with the overflow count and tests every object.
+constexpr int kWorldCandidates = 8;
+constexpr std::uint8_t kWorldCandidatesOverflow = 255;
+
 template <class Real>
 struct WorldView {
   const PlanarPolygon<Real>* polygons;
@@ -94,7 +127,36 @@ struct WorldView {
   int cylinder_count;
   const Pose<Real>* pose;  // per object; null: a static world (every object still, none removed)
   const ContactClass* object_class;  // per object; null: all plain walls (energy_ledger.hpp)
+  // Per particle i, its world list: objects candidate[k * stride + i], k < candidate_count[i]
+  // (kWorldCandidatesOverflow: every object); null: every object for every particle.
+  const std::uint16_t* candidate = nullptr;
+  const std::uint8_t* candidate_count = nullptr;
+  Index candidate_stride = 0;
+
   BLAZE_HD ContactClass class_of(int w) const { return object_class ? object_class[w] : ContactClass::wall; }
+  BLAZE_HD bool active(int w) const { return !pose || pose[w].active; }
+  // f(object, w) for each object present (not removed) that particle i may touch: its world list,
+  // or every object; in object index order (polygons first, then cylinders) either way.
+  template <class F>
+  BLAZE_HD void visit(Index i, F&& f) const {
+    if (candidate) {
+      const int c = candidate_count[i];
+      if (c != kWorldCandidatesOverflow) {
+        for (int k = 0; k < c; ++k) {
+          const int w = candidate[static_cast<std::size_t>(k) * candidate_stride + i];
+          if (!active(w)) continue;
+          if (w < polygon_count) f(polygons[w], w);
+          else f(cylinders[w - polygon_count], w);
+        }
+        return;
+      }
+    }
+    int w = 0;
+    for (int k = 0; k < polygon_count; ++k, ++w)
+      if (active(w)) f(polygons[k], w);
+    for (int k = 0; k < cylinder_count; ++k, ++w)
+      if (active(w)) f(cylinders[k], w);
+  }
 };
 
 // What the move-world phase reads and writes (kernels/move_world.hpp).
@@ -156,6 +218,9 @@ class WorldStore {
   bool empty() const { return polygons_.size() == 0 && cylinders_.size() == 0; }
   // Some object moves or is removed at a time: the step places the world first (move-world).
   bool dynamic() const { return dynamic_; }
+  // The step each object's pose is for (t = step dt; all objects advance together); null in a
+  // static world. The rebuild check reads it (world lists, pipeline/world_candidates.hpp).
+  const std::uint64_t* step_counter() const { return dynamic_ ? steps_.data() : nullptr; }
   // Poses as they stand (tests, output).
   std::vector<Pose<Real>> poses() const { return to_host(poses_, poses_.size()); }
 

@@ -1,0 +1,108 @@
+// World lists on one memory space (kernels/world_candidates.hpp): whether a run keeps them, their
+// buffers, the build at each neighbour-list rebuild and the last step a build stays valid for
+// while objects move. A list holds while every point of every moving object has moved at most
+// skin / 2 since its build: at most floor(skin / (2 v dt)) steps for the fastest surface speed v
+// (World::surface_speed: a drum turning about its own axis does not count; its lifters do). With
+// skin 0 every step rebuilds once anything moves, as the neighbour list does.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include "blaze/exec/primitives.hpp"
+#include "blaze/particles/particle_store.hpp"
+#include "blaze/world/world.hpp"
+#include "kernels/world_candidates.hpp"
+
+namespace blaze {
+
+// automatic: lists from kWorldListsMinObjects objects on (below it a full pass is as cheap);
+// on / off: always / never (tests compare the two).
+enum class WorldLists { automatic, on, off };
+constexpr int kWorldListsMinObjects = 8;
+
+template <class Real, class Space>
+class WorldCandidates {
+ public:
+  static constexpr std::uint64_t kForever = ~std::uint64_t{0};
+
+  void configure(const World<Real>& world, WorldLists mode, Real skin, double dt) {
+    const int objects = world.object_count();
+    if (mode == WorldLists::on && objects > 65535)
+      throw std::invalid_argument("world lists: at most 65535 world objects, got " + std::to_string(objects));
+    on_ = objects > 0 && objects <= 65535 &&
+          (mode == WorldLists::on || (mode == WorldLists::automatic && objects >= kWorldListsMinObjects));
+    skin_ = skin;
+    double v = 0;
+    for (int k = 0; k < objects; ++k) v = std::fmax(v, world.surface_speed(k));
+    const double steps = v > 0 ? std::floor(0.5 * static_cast<double>(skin) / (v * dt)) : HUGE_VAL;
+    valid_steps_ = steps < 1e18 ? static_cast<std::uint64_t>(steps) : kForever;
+  }
+  bool on() const { return on_; }
+
+  // The lists for the particles as they are and the world as it stands at world step `step`.
+  void build(const ParticleView<Real>& p, const WorldView<Real>& world, std::uint64_t step) {
+    if (!on_) return;
+    stride_ = p.n;
+    object_.resize(std::max<std::size_t>(object_.size(), static_cast<std::size_t>(kWorldCandidates) * p.n));
+    count_.resize(std::max<std::size_t>(count_.size(), p.n));
+    for_each(Space{}, p.n, BuildWorldCandidates<Real>{p.position, p.radius, world, skin_, object_.data(), count_.data(), stride_});
+    valid_until_ = valid_steps_ == kForever || step > kForever - valid_steps_ ? kForever : step + valid_steps_;
+    ++builds_;
+  }
+  // The world view with the lists attached (unchanged when off).
+  WorldView<Real> attach(WorldView<Real> w) const {
+    if (!on_) return w;
+    w.candidate = object_.data(), w.candidate_count = count_.data(), w.candidate_stride = stride_;
+    return w;
+  }
+  // The last world step the lists hold for (kForever: a static world, or lists off).
+  std::uint64_t valid_until() const { return on_ ? valid_until_ : kForever; }
+  std::uint64_t valid_steps() const { return valid_steps_; }
+  // Particles whose list overflowed at the last build (they test every object).
+  Index overflowed() const {
+    const std::vector<std::uint8_t> c = counts();
+    return static_cast<Index>(std::count(c.begin(), c.end(), kWorldCandidatesOverflow));
+  }
+  // Objects listed at the last build, over all particles (an overflowed particle counts all).
+  double mean_listed(int objects) const {
+    const std::vector<std::uint8_t> c = counts();
+    if (c.empty()) return objects;
+    double total = 0;
+    for (auto k : c) total += k == kWorldCandidatesOverflow ? objects : k;
+    return total / static_cast<double>(c.size());
+  }
+  std::uint64_t builds() const { return builds_; }
+  // Particle i's list as the last build left it (tests); empty when off, every object on overflow.
+  std::vector<std::vector<int>> lists(int objects) const {
+    const std::vector<std::uint8_t> c = counts();
+    std::vector<std::uint16_t> o(c.empty() ? 0 : static_cast<std::size_t>(kWorldCandidates) * stride_);
+    copy_n(object_.data(), o.size(), o.data(), Space{}, Host{});
+    std::vector<std::vector<int>> out(c.size());
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (c[i] == kWorldCandidatesOverflow)
+        for (int w = 0; w < objects; ++w) out[i].push_back(w);
+      else
+        for (int k = 0; k < c[i]; ++k) out[i].push_back(o[static_cast<std::size_t>(k) * stride_ + i]);
+    }
+    return out;
+  }
+  std::size_t bytes() const { return object_.size() * sizeof(std::uint16_t) + count_.size(); }
+
+ private:
+  std::vector<std::uint8_t> counts() const {
+    std::vector<std::uint8_t> c(on_ ? static_cast<std::size_t>(stride_) : 0);
+    copy_n(count_.data(), c.size(), c.data(), Space{}, Host{});
+    return c;
+  }
+  bool on_ = false;
+  Real skin_ = 0;
+  std::uint64_t valid_steps_ = kForever, valid_until_ = kForever, builds_ = 0;
+  Index stride_ = 0;
+  Buffer<std::uint16_t, Space> object_;
+  Buffer<std::uint8_t, Space> count_;
+};
+
+}  // namespace blaze

@@ -1,0 +1,254 @@
+// World lists (issue 19; pipeline/world_candidates.hpp, kernels/world_candidates.hpp): each
+// particle's world objects in reach, built at the neighbour-list rebuilds, so the world kernel
+// tests a few objects instead of every one (a mill's shell, end plates and lifter faces).
+// - The reach test is conservative: every sphere that touches a polygon (a lifter face, a
+//   triangle) or a drum cylinder passes within_reach with its own radius (random spheres near
+//   and across the edges and ends, float and double); far ones do not.
+// - In a turning mill with lifters (15 objects), at every sample the lists hold every object that
+//   touches a ball, for skins of 0.05 r to r, float and double: the lifters move up to skin / 2
+//   between builds and the rebuild check trips when they may have (World::surface_speed); the
+//   lists hold 1-3 objects on average, far fewer than 15.
+// - With skin 0 (a rebuild every step, lists on or off alike) the trajectory with lists is
+//   bitwise the one without, history-free and with a tangential spring: the lists change which
+//   objects are tested, never the forces or their order.
+// - A sphere at rest far from a wall (beyond the skin: not in its list) that the wall comes to:
+//   the rebuild check trips on the wall's motion alone, and the sphere rebounds at (1 + e) V,
+//   bitwise as without lists.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <random>
+#include "blaze/scene/mill_geometry.hpp"
+#include "verification/report.hpp"
+#include "verification/scenes.hpp"
+#include "verification/tolerances.hpp"
+
+using namespace blaze;
+using namespace blaze::test;
+
+namespace {
+
+const char* const kCase = "World lists (issue 19)";
+
+template <class Law>
+using LeanSim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, FullFeatures>;
+
+// The 0.3 m drum with four 2 cm lifters at 40 rpm of test_energy_ledger.cpp, and its balls.
+template <class Real>
+World<Real> small_mill(double rpm, double ramp) {
+  MillSpec mill;
+  mill.axis = {0, 0, 1}, mill.diameter = 0.3, mill.length = 0.06, mill.omega = rpm * 2 * kPi / 60, mill.ramp = ramp;
+  mill.lifters.push_back({4, 0.02, 0.02, 0, 0});
+  World<Real> w;
+  for (const MillWall& mw : mill_walls(mill)) w.polygons.push_back(PlanarPolygon<Real>::make(mw.vertices, 1, mw.rim_edges));
+  w.cylinders.push_back(Cylinder<Real>::make({0, 0, -0.03}, {0, 0, 1}, 0.15, 0.06, 1));
+  w.motions.assign(static_cast<std::size_t>(w.object_count()), mill_motion(mill));
+  return w;
+}
+template <class Real>
+ParticleState<Real> mill_balls(double r) {
+  ParticleState<Real> s;
+  for (double x = -0.11; x < 0.111; x += 0.022)
+    for (double y = -0.115; y < -0.005; y += 0.022)
+      for (double z : {-0.0125, 0.0125})
+        if (std::hypot(x, y) < 0.105) s.add_sphere(vec_cast<Real>(Vec3<double>{x, y, z}), Real(r), Real(7800), 0);
+  return s;
+}
+
+// Objects of the placed world that touch sphere (x, r), by index (every object stays present).
+template <class Real>
+std::vector<int> touching(const World<Real>& placed_world, const Vec3<Real>& x, Real r) {
+  std::vector<int> out;
+  int w = 0;
+  for (const auto& p : placed_world.polygons) {
+    if (collide_sphere(x, r, p).touching) out.push_back(w);
+    ++w;
+  }
+  for (const auto& c : placed_world.cylinders) {
+    if (collide_sphere(x, r, c).touching) out.push_back(w);
+    ++w;
+  }
+  return out;
+}
+
+template <class Real>
+void reach_is_conservative() {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto quad = PlanarPolygon<Real>::make({{-0.1, 0, -0.02}, {0.1, 0, -0.02}, {0.1, 0.03, 0.02}, {-0.1, 0.03, 0.02}}, 0);
+  const auto tri = PlanarPolygon<Real>::make({{0, 0, 0}, {0.05, 0, 0}, {0, 0.05, 0.01}}, 0);
+  const auto drum = Cylinder<Real>::make({0, 0, -0.05}, {0, 0, 1}, 0.2, 0.1, 0);
+  long touched = 0, far_passed = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double r = 0.002 + 0.02 * (0.5 + 0.5 * u(rng));
+    const Vec3<Real> xq = vec_cast<Real>(Vec3<double>{0.12 * u(rng), 0.015 + 0.04 * u(rng), 0.04 * u(rng)});
+    const Vec3<Real> xt = vec_cast<Real>(Vec3<double>{0.025 + 0.04 * u(rng), 0.025 + 0.04 * u(rng), 0.03 * u(rng)});
+    const Vec3<Real> xc = vec_cast<Real>(Vec3<double>{0.21 * u(rng), 0.21 * u(rng), 0.07 * u(rng)});
+    const Real rr = static_cast<Real>(r);
+    const bool hit[3] = {collide_sphere(xq, rr, quad).touching, collide_sphere(xt, rr, tri).touching,
+                         collide_sphere(xc, rr, drum).touching};
+    const bool near[3] = {within_reach(xq, rr, quad), within_reach(xt, rr, tri), within_reach(xc, rr, drum)};
+    for (int o = 0; o < 3; ++o) {
+      touched += hit[o];
+      if (hit[o] && !near[o]) BOOST_ERROR("a sphere touching object " << o << " is out of its reach (r = " << r << ")");
+    }
+    far_passed += within_reach(vec_cast<Real>(Vec3<double>{0, 0.5 + r, 0}), rr, quad) +
+                  within_reach(vec_cast<Real>(Vec3<double>{0, 0, 0.06 + r}), rr, drum) +
+                  within_reach(vec_cast<Real>(Vec3<double>{0, 0, 0}), rr, drum);
+  }
+  BOOST_TEST(touched > 2000);  // the sample does touch
+  BOOST_TEST(far_passed == 0);
+}
+
+// Runs the small mill for `seconds` with skin s_frac r, checking every `every` steps that each
+// ball's list holds every object it touches. Returns the mean listed objects at the end.
+template <class Real>
+void lists_hold_contacts(double skin_fraction) {
+  using Law = LinearLaw<Real>;
+  const double r = 0.01, kn = 1e5, m = 7800 * 4.0 / 3.0 * kPi * r * r * r;
+  const double dt = kPi * std::sqrt(0.5 * m / kn) / 25;
+  const World<Real> w = small_mill<Real>(40, 0.1);
+  const Law law{LinearSpringDashpot<Real>::from_restitution(Real(kn), Real(0.8)), HistoryFreeFriction<Real>::make(Real(0.3), Real(50))};
+  LeanSim<Law> sim(params<Real>(dt, {0, -9.81, 0}, 0.2, skin_fraction * r), one_law(law), w, mill_balls<Real>(r));
+  BOOST_TEST_REQUIRE(sim.world_lists().on());  // 15 objects: on by default
+  const int objects = w.object_count();
+  // the lifter tops' corners are the fastest points: 0.15 m from the axis at most
+  const double v_bound = 40 * 2 * kPi / 60 * 0.15;
+  BOOST_TEST(sim.world_lists().valid_steps() <= static_cast<std::uint64_t>(0.5 * skin_fraction * r / (v_bound * dt)) + 1);
+  long checked = 0, missing = 0;
+  const std::uint64_t builds0 = sim.world_lists().builds();
+  for (int k = 0; k < 60; ++k) {
+    sim.run(static_cast<std::uint64_t>(std::llround(0.01 / dt)) + static_cast<std::uint64_t>(k % 7));
+    const auto st = sim.state();
+    const World<Real> now = placed(w, sim.world_poses());
+    const auto lists = sim.world_lists().lists(objects);
+    BOOST_TEST_REQUIRE(lists.size() == st.size());
+    for (std::size_t i = 0; i < st.size(); ++i)
+      for (int o : touching(now, st.position[i], st.radius[i])) {
+        ++checked;
+        missing += std::find(lists[i].begin(), lists[i].end(), o) == lists[i].end();
+      }
+  }
+  const double mean = sim.world_lists().mean_listed(objects);
+  BOOST_TEST_MESSAGE("world lists, skin " << skin_fraction << " r, " << sizeof(Real) * 8 << "-bit: " << checked
+                                          << " wall contacts checked, " << missing << " missing; " << sim.world_lists().builds() - builds0
+                                          << " builds, " << sim.neighbour_builds() << " neighbour builds; " << mean
+                                          << " objects listed per ball of " << objects << "; valid " << sim.world_lists().valid_steps()
+                                          << " steps");
+  BOOST_TEST_REQUIRE(checked > 300);  // the charge does touch the shell and the lifters
+  check_at_most({kCase, "turning mill: wall contacts missing from the lists, skin " + std::to_string(skin_fraction).substr(0, 4) +
+                            " r, " + (sizeof(Real) == 4 ? "float" : "double"),
+                 "-", "lists hold every contact (skin / 2 for the balls, skin / 2 for the lifters)"},
+                missing, 0);
+  check_at_most({kCase, "turning mill: objects listed per ball / objects, skin " + std::to_string(skin_fraction).substr(0, 4) + " r, " +
+                            (sizeof(Real) == 4 ? "float" : "double"),
+                 "-", "the lists prune"},
+                mean / objects, 0.25);
+  BOOST_TEST(sim.world_lists().overflowed() == 0);
+}
+
+// The trajectory with lists and without, skin 0: a rebuild at every step either way.
+template <class Law>
+bool same_with_and_without_lists(const Law& law) {
+  using Real = typename Law::real_type;
+  const double r = 0.01, kn = 1e5, m = 7800 * 4.0 / 3.0 * kPi * r * r * r;
+  const double dt = kPi * std::sqrt(0.5 * m / kn) / 25;
+  const World<Real> w = small_mill<Real>(40, 0.1);
+  auto prm = params<Real>(dt, {0, -9.81, 0}, 0.2, 0);
+  std::vector<ParticleState<Real>> out;
+  for (WorldLists mode : {WorldLists::on, WorldLists::off}) {
+    prm.world_lists = mode;
+    LeanSim<Law> sim(prm, one_law(law), w, mill_balls<Real>(r));
+    BOOST_TEST_REQUIRE(sim.world_lists().on() == (mode == WorldLists::on));
+    sim.run(static_cast<std::uint64_t>(std::llround(0.4 / dt)));
+    out.push_back(sim.state());
+  }
+  const auto &a = out[0], &b = out[1];
+  bool same = a.size() == b.size();
+  for (std::size_t k = 0; same && k < a.size(); ++k)
+    same = a.id[k] == b.id[k] && a.position[k].x == b.position[k].x && a.position[k].y == b.position[k].y &&
+           a.position[k].z == b.position[k].z && a.velocity[k].x == b.velocity[k].x && a.velocity[k].y == b.velocity[k].y &&
+           a.angular_velocity[k].z == b.angular_velocity[k].z;
+  return same;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(world_lists)
+
+BOOST_AUTO_TEST_CASE(reach_test_is_conservative) {
+  reach_is_conservative<float>();
+  reach_is_conservative<double>();
+}
+
+BOOST_AUTO_TEST_CASE(surface_speeds_bound_the_objects_motion) {
+  const World<double> w = small_mill<double>(40, 0.1);
+  const double omega = 40 * 2 * kPi / 60;
+  // the drum turns about its own axis: its surface stays put
+  BOOST_TEST(w.surface_speed(w.object_count() - 1) == 0.0);
+  // a lifter's top corners sit at sqrt(0.13^2 + 0.01^2) from the axis
+  const double top = omega * std::hypot(0.15 * std::sqrt(1 - 0.01 * 0.01 / (0.15 * 0.15)) - 0.02, 0.01);
+  BOOST_TEST(std::fabs(w.surface_speed(2) - top) < 1e-12 * top);
+  // the same drum turning about another axis moves: at least omega times its radius
+  World<double> tilted = w;
+  Motion m = tilted.motions.back();
+  m.point = {0.05, 0, 0};
+  tilted.motions.back() = m;
+  BOOST_TEST(tilted.surface_speed(w.object_count() - 1) >= omega * 0.15);
+  // a vibration's ramp adds A / T_r to 2 pi f A
+  Motion v;
+  v.kind = MotionKind::vibration, v.amplitude = 1e-3, v.frequency = 20, v.ramp = 0.5;
+  BOOST_TEST(std::fabs(peak_speed(v, {}) - 1e-3 * (2 * kPi * 20 + 2)) < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(lists_hold_every_wall_contact_in_a_turning_mill) {
+  for (double skin : {0.05, 0.3, 1.0}) {
+    lists_hold_contacts<double>(skin);
+    lists_hold_contacts<float>(skin);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(lists_change_no_trajectory) {
+  const auto normal = LinearSpringDashpot<double>::from_restitution(1e5, 0.8);
+  BOOST_TEST(same_with_and_without_lists(LinearLaw<double>{normal, HistoryFreeFriction<double>::make(0.3, 50)}),
+             "history-free: bitwise the same with lists");
+  BOOST_TEST(same_with_and_without_lists(LinearSpringLaw<double>{normal, TangentialSpring<double>::linear(0.3, 2.0 / 7.0 * 1e5, normal.beta)}),
+             "linear spring: bitwise the same with lists");
+  const auto normal_f = LinearSpringDashpot<float>::from_restitution(1e5f, 0.8f);
+  BOOST_TEST(same_with_and_without_lists(LinearLaw<float>{normal_f, HistoryFreeFriction<float>::make(0.3f, 50.0f)}),
+             "history-free, float: bitwise the same with lists");
+}
+
+BOOST_AUTO_TEST_CASE(a_wall_that_comes_to_a_still_sphere_finds_it) {
+  using Law = LinearLaw<double>;
+  const double r = 5e-3, kn = 1e4, e = 0.7;
+  const Law law{LinearSpringDashpot<double>::from_restitution(kn, e), HistoryFreeFriction<double>::make(0, 0)};
+  const double m = 2500 * 4.0 / 3.0 * kPi * r * r * r, t_c = kPi * std::sqrt(m / kn), dt = t_c / 200;
+  for (double skin : {0.1 * r, r, 2 * r})
+    for (double speed : {0.5, 2.0}) {
+      ParticleState<double> s;
+      s.add_sphere({0, 0.02 + 2 * skin, 0}, r, 2500, 0);
+      World<double> world;
+      world.polygons.push_back(floor_square<double>(0, 0.05));
+      world.set_motion(0, Motion{MotionKind::translation, {0, 0, 1}, {0, 0, 0}, 0, 0, {0, speed, 0}});
+      double v[2];
+      std::uint64_t builds[2];
+      for (int on = 0; on < 2; ++on) {
+        auto prm = params<double>(dt, {0, 0, 0}, 0.5, skin);
+        prm.world_lists = on ? WorldLists::on : WorldLists::off;
+        LeanSim<Law> sim(prm, one_law(law), world, s);
+        if (on) BOOST_TEST_REQUIRE(sim.world_lists().lists(1).at(0).empty());  // out of reach at the start
+        sim.run(static_cast<std::uint64_t>(std::llround(((0.02 + 2 * skin - r) / speed + 3 * t_c) / dt)));
+        v[on] = sim.state().velocity[0].y;
+        builds[on] = sim.neighbour_builds();
+      }
+      BOOST_TEST_MESSAGE("wall to a still sphere, skin " << skin / r << " r, V = " << speed << ": leaves at " << v[1]
+                                                         << " m/s with lists (" << builds[1] << " builds), " << v[0] << " without ("
+                                                         << builds[0] << ")");
+      check_relative({kCase, "still sphere hit by a wall beyond its list's reach: rebound vs (1 + e) V", "-",
+                      "the rebuild check trips on the wall's motion"},
+                     v[1], (1 + e) * speed, tol::moving_wall_restitution);
+      BOOST_TEST(v[1] == v[0]);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
