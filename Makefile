@@ -16,6 +16,7 @@
 #   make table-4.4         the thesis's lab-mill power table (studies/mill), two contact laws -> studies/mill/table-4.4.md
 #   make fig-slice-mill    the slice mill's power and centrifuging layers against speed (studies/mill)
 #   make fig-mill-2d       the 2D mill's toe and shoulder against friction (thesis 4.1.5; GPU)
+#   make los-bronces       the SAG mill of thesis 4.3: power per revolution and its split (GPU)
 #   make fig-mill-work-precision  the lab mill's error against wall time over dt and precision
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
@@ -256,13 +257,19 @@ fig-repose-liggghts: deps
 # make fig-mill-work-precision: the 30% / 22 rpm lab mill's power and toe error against wall time
 # for dt = t_c/10 ... t_c/100, float and double, two laws -> data/mill/work_precision/,
 # studies/mill/work-precision.md, plots/fig-mill-work-precision.png (tools/mill_work_precision.sh).
-.PHONY: table-4.4 fig-slice-mill fig-mill-2d fig-mill-work-precision
+# make los-bronces: the SAG mill of section 4.3 (139k spheres, 64 lifter rows, seven revolutions)
+# -> data/mill/los_bronces/, studies/mill/los-bronces.md, plots/fig-los-bronces.png
+# (tools/los_bronces.sh; a GPU target: 2.2e6 steps).
+.PHONY: table-4.4 fig-slice-mill fig-mill-2d fig-mill-work-precision los-bronces
 table-4.4: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/table_4_4.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 fig-slice-mill: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/slice_mill.sh $(BUILD)/$(RUN_BACKEND)/study_mill
+los-bronces: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
+	tools/los_bronces.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 fig-mill-2d: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/mill_2d.sh $(BUILD)/$(RUN_BACKEND)/study_mill

@@ -256,20 +256,27 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
       add(l.type, l.position[i], l.velocity.empty() ? Vec3<double>{0, 0, 0} : l.velocity[i], false,
           "[[particles]] #" + std::to_string(k + 1) + " point " + std::to_string(i));
   }
+  // Fills: random sequential placement in the box, where a particle overlaps no earlier particle
+  // and no wall, lies in front of every wall it is over and inside every drum along its length
+  // (WorldOverlapCheck::blocked: a box wider than a mill is clipped to the space between its
+  // shell, lifters and end plates). Polyhedra are tested with their bounding sphere against the
+  // world, so they keep clear of the walls by their bounding radius.
   for (std::size_t k = 0; k < s.fills.size(); ++k) {
     const FillSpec& f = s.fills[k];
     const double r = s.types[static_cast<std::size_t>(f.type)].size();
     const std::string name = "[[fill]] #" + std::to_string(k + 1);
     std::uniform_real_distribution<double> ux(f.lo.x + r, f.hi.x - r), uy(f.lo.y + r, f.hi.y - r), uz(f.lo.z + r, f.hi.z - r);
+    const std::vector<Vec3<double>> no_vertices;
     for (long i = 0; i < f.count; ++i) {
       int tries = 0;
       Vec3<double> x;
       do {
         if (++tries > 1000)
           throw SceneError(s.path + ": " + name + ": no free place for particle " + std::to_string(i) + " of " +
-                           std::to_string(f.count) + " after 1000 random tries; enlarge the box or lower count");
+                           std::to_string(f.count) + " after 1000 random tries (the box, less the walls and the particles "
+                           "placed before, is full); enlarge the box or lower count");
         x = {ux(rng), uy(rng), uz(rng)};
-      } while (placed.overlapping(x, r, 0) >= 0);
+      } while (world.blocked(x, r, no_vertices) || placed.overlapping(x, r, 0) >= 0);
       add(f.type, x, f.velocity, true, name);
     }
   }

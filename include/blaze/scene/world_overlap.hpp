@@ -58,6 +58,42 @@ class WorldOverlapCheck {
     for (std::size_t k = 0; k < cylinders_.size(); ++k) check_cylinder(k, x, r, vertices, who);
   }
 
+  // For random fills (scene_build.hpp): would check() refuse a particle here, or does it lie
+  // behind a wall it is over (any depth: inside a lifter bar, outside a hopper) or outside a drum
+  // along its length? Counts nothing, throws nothing.
+  bool blocked(const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices) const {
+    for (const PlanarPolygon<double>& w : polygons_) {
+      const double d = dot(x - w.centroid, w.normal);
+      const bool over = w.contains(x - d * w.normal);
+      if (over && d <= 0) return true;
+      if (vertices.empty()) {
+        if (over && d < r - slack_) return true;
+        if (!over && std::fabs(d) < r && rim_distance(w, x) < r - slack_) return true;
+        continue;
+      }
+      if (!(d > 0 && d < r)) continue;
+      for (const auto& v : vertices) {
+        const double dv = dot(v - w.centroid, w.normal);
+        if (dv < -slack_ && w.contains(v - dv * w.normal)) return true;
+      }
+    }
+    for (const Cylinder<double>& c : cylinders_) {
+      const double s = dot(x - c.origin, c.axis);
+      if (!(s >= 0 && s <= c.length)) continue;
+      const double rho = norm(x - c.origin - s * c.axis);
+      if (vertices.empty()) {
+        if (rho + r > c.radius + slack_) return true;
+        continue;
+      }
+      if (rho > c.radius) return true;
+      for (const auto& v : vertices) {
+        const double sv = dot(v - c.origin, c.axis);
+        if (sv >= 0 && sv <= c.length && norm(v - c.origin - sv * c.axis) > c.radius + slack_) return true;
+      }
+    }
+    return false;
+  }
+
   // After every particle: walls that face away from all the particles over them.
   void finish() const {
     for (std::size_t k = 0; k < polygons_.size(); ++k) {
