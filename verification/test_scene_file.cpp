@@ -519,14 +519,10 @@ BOOST_AUTO_TEST_CASE(placements_give_the_particles_they_promise) {
   BOOST_TEST((has(msg, "[[particles]] #1 point 0 overlaps particle 0 of [[lattice]] #1")), msg);
 }
 
-// A [[fill]] whose box is wider than a [mill] is clipped to the drum: every particle lies inside
-// the shell and between the end plates, touches no lifter, and the count is met; for 0, 8 and 24
-// lifter rows and two sizes. A fill that cannot fit is refused naming the fill.
-BOOST_AUTO_TEST_CASE(a_fill_wider_than_a_mill_is_clipped_to_its_interior) {
-  for (int rows : {0, 8, 24})
-    for (double r : {0.01, 0.025}) {
-      const long count = r < 0.02 ? 1500 : 120;
-      const std::string text = std::string(R"(
+// A 0.9 m x 0.15 m mill at 20 rpm with `rows` lifter rows (0: none) and a [[fill]] of `count`
+// balls of radius r whose box is wider than the drum.
+std::string mill_fill_scene(double r, long count, int rows) {
+  return std::string(R"(
 [simulation]
 law = "linear"
 dt = 1e-5
@@ -558,7 +554,16 @@ diameter = 0.9
 length = 0.15
 rpm = 20
 )" + (rows > 0 ? "lifters = [{ count = " + std::to_string(rows) + ", height = 0.04, width = 0.03 }]\n" : std::string());
-      const Scene s = parse_scene(text, "mill.toml");
+}
+
+// A [[fill]] whose box is wider than a [mill] is clipped to the drum: every particle lies inside
+// the shell and between the end plates, touches no lifter, and the count is met; for 0, 8 and 24
+// lifter rows and two sizes.
+BOOST_AUTO_TEST_CASE(a_fill_wider_than_a_mill_is_clipped_to_its_interior) {
+  for (int rows : {0, 8, 24})
+    for (double r : {0.01, 0.025}) {
+      const long count = r < 0.02 ? 1500 : 120;
+      const Scene s = parse_scene(mill_fill_scene(r, count, rows), "mill.toml");
       const auto p = build_particles<double>(s, nullptr);
       BOOST_TEST_REQUIRE(p.size() == static_cast<std::size_t>(count));
       const World<double> w = build_world<double>(s);
@@ -576,38 +581,7 @@ rpm = 20
 // A fill the drum cannot hold (690 balls of 2.5 cm: 0.3 of the box, 0.47 of the drum; random
 // placement jams near 0.38) is refused naming the fill, not run half-filled.
 BOOST_AUTO_TEST_CASE(a_fill_the_mill_cannot_hold_is_refused) {
-  const std::string text = R"(
-[simulation]
-law = "linear"
-dt = 1e-5
-end_time = 0.1
-domain_lo = [-0.5, -0.5, -0.1]
-domain_hi = [0.5, 0.5, 0.1]
-[[material]]
-name = "steel"
-density = 7800
-[[pair]]
-materials = ["steel", "steel"]
-stiffness = 4e5
-restitution = 0.8
-[[particle_type]]
-name = "ball"
-material = "steel"
-radius = 0.025
-[[fill]]
-type = "ball"
-count = 690
-lo = [-0.46, -0.46, -0.09]
-hi = [0.46, 0.46, 0.09]
-[mill]
-material = "steel"
-centre = [0.0, 0.0, 0.0]
-axis = [0.0, 0.0, 1.0]
-diameter = 0.9
-length = 0.15
-rpm = 20
-)";
-  const std::string msg = rejection([&] { build_particles<double>(parse_scene(text, "mill.toml"), nullptr); });
+  const std::string msg = rejection([&] { build_particles<double>(parse_scene(mill_fill_scene(0.025, 690, 8), "mill.toml"), nullptr); });
   BOOST_TEST((has(msg, "mill.toml: [[fill]] #1: no free place for particle") && has(msg, "of 690")), msg);
 }
 
