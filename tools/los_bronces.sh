@@ -8,12 +8,15 @@
 # plots/fig-los-bronces.png. A GPU target (2.2e6 steps of 139k particles); extra arguments go to
 # study_mill (e.g. --set simulation.end_time=20 for fewer revolutions).
 # Usage: tools/los_bronces.sh STUDY_BINARY [DIR] [--set key=value]...   (DIR: data/mill/los_bronces)
+#        tools/los_bronces.sh --report [DIR]    the table and plot from a run's files (a GPU run's, copied)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$1 dir=${2:-data/mill/los_bronces}
 shift $(( $# >= 2 ? 2 : 1 ))
 mkdir -p "$dir"
-"$bin" studies/mill/los_bronces.toml --set "output.directory=$dir" "$@" | tee "$dir/run.log"
+if [ "$bin" != "--report" ]; then
+  "$bin" studies/mill/los_bronces.toml --set "output.directory=$dir" "$@" | tee "$dir/run.log"
+fi
 python3 - "$dir" > studies/mill/los-bronces.md <<'PY'
 import csv, sys
 d = sys.argv[1]
@@ -28,19 +31,30 @@ print("# The Los Bronces SAG mill (thesis section 4.3)\n")
 print(f"{m['balls']} spheres (Table 4.6 classes), 10 rpm, dt = {m['dt_s']} s, {m['law']}, on {m['device']} "
       f"({m['backend']}): {float(m['wall_time_s']):.0f} s wall time, {float(m['steps_per_s']):.3g} steps/s. "
       "Lifters as studies/mill/los_bronces.toml states them (the thesis gives no dimensions).\n")
-print("| revolution | torque method (MW) | energy method (MW) | particle-particle | shell | lifters | end plates | toe (deg) | shoulder (deg) |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("| revolution | torque method (MW) | energy method (MW) | the thesis's estimate (MW) | particle-particle | shell | lifters | end plates | toe (deg) | shoulder (deg) |")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for r in rows:
     e = float(r["energy_method_W"])
     sh = lambda k: f"{100 * float(r[k]) / e:.1f}%" if e > 0 else "-"
-    print(f"| {r['revolution']} | {float(r['power_W']) / 1e6:.3f} | {e / 1e6:.3f} | {sh('pair_W')} | {sh('shell_W')} | "
+    print(f"| {r['revolution']} | {float(r['power_W']) / 1e6:.3f} | {e / 1e6:.3f} | {float(r['thesis_estimate_W']) / 1e6:.2f} | "
+          f"{sh('pair_W')} | {sh('shell_W')} | "
           f"{sh('lifter_W')} | {sh('end_plate_W')} | {float(r['toe_deg']):.0f} | {float(r['shoulder_deg']):.0f} |")
 p = float(m["power_W"]) / 1e6
-print(f"\nMean of revolutions after the first {m['revolutions_averaged']} averaged: **{p:.2f} MW** by the torque method, "
+import re
+pen = re.search(r"deepest penetration ([0-9.eE+-]+)%", open(d + "/run.log").read())
+print(f"\n{len(rows)} revolutions at full speed were run; the mean of the {m['revolutions_averaged']} after the first: "
+      f"**{p:.2f} MW** by the torque method, "
       f"{float(m['energy_method_W']) / 1e6:.2f} MW by the energy method; plant 7.1 MW ({100 * (p - 7.1) / 7.1:+.1f}%), "
       f"thesis 6.8 MW. Dissipation: particle-particle {float(m['share_pair']):.1f}%, shell {float(m['share_shell']):.1f}%, "
       f"lifters {float(m['share_lifter']):.1f}%, end plates {float(m['share_end_plate']):.1f}% "
-      "(thesis: lifters 68%, shell 18%, particle-particle < 14%).")
+      "(thesis: lifters 68%, shell 18%, particle-particle < 14%). The split here is of the energy the contacts "
+      "take out of the charge's motion (exact for velocity Verlet); the thesis's estimate sum |F_diss| |V| dt "
+      f"({float(m['thesis_estimate_W']) / 1e6:.2f} MW here) counts at each contact the damping force times the "
+      "whole relative speed, which at the liner (lifted charge riding with it) is far more than what it dissipates. "
+      "Toe and shoulder in degrees from the bottom of the drum in its direction of rotation (-45 deg: 7:30 on the "
+      "clock face; thesis: toe between 7 and 8 o'clock, shoulder near 2 o'clock, 120 deg)."
+      + (f" Deepest overlap {pen.group(1)}% of a radius: the fill's fall from the top of the drum (up to ~9 m) "
+         "onto the charge, before the power is averaged." if pen else ""))
 PY
 gnuplot -e "csv='$dir/power.csv'" plots/los_bronces.gp
 echo "wrote $dir/, studies/mill/los-bronces.md, plots/fig-los-bronces.png"
