@@ -389,7 +389,7 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
-                                        "domain_lo", "domain_hi", "skin", "pair_evaluation", "force_dt", "max_impact_speed", "seed",
+                                        "domain_lo", "domain_hi", "skin", "pair_evaluation", "world_lists", "force_dt", "max_impact_speed", "seed",
                                         "force_long_run", "tangential", "rolling"});
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
   s.tangential = static_cast<TangentialKind>(f.choice("tangential", {"history_free", "mindlin", "linear_spring"}, 0));
@@ -421,6 +421,7 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
     f.fail(*f.get("domain_hi"), "domain_hi", "must exceed domain_lo in x, y and z");
   s.skin = f.number_or("skin", 0.2, {0, 10, false, false, "x largest bounding radius"});
   s.pair_evaluation = static_cast<PairsKind>(f.choice("pair_evaluation", {"auto", "both_sides", "once"}, 0));
+  s.world_lists = static_cast<WorldListsKind>(f.choice("world_lists", {"auto", "on", "off"}, 0));
   s.force_dt = f.boolean_or("force_dt", false);
   s.max_impact_speed = f.number_or("max_impact_speed", 0, non_negative("m/s"));
   s.seed = static_cast<std::uint64_t>(f.integer_or("seed", 1, 0, std::numeric_limits<long>::max()));

@@ -124,6 +124,7 @@ const BadValue kBadValues[] = {
     {"law =", "law = \"hooke\"", "key 'law' = \"hooke\"", "one of \"linear\" \"hertz\""},
     {"law =", "pair_evaluation = \"half\"\nlaw = \"linear\"", "key 'pair_evaluation' = \"half\"",
      "one of \"auto\" \"both_sides\" \"once\""},
+    {"law =", "world_lists = \"always\"\nlaw = \"linear\"", "key 'world_lists' = \"always\"", "one of \"auto\" \"on\" \"off\""},
     {"friction =", "friction = -0.1", "key 'friction' = -0.1", "in [0, 100]"},
     {"material = \"glass\"", "material = \"glas\"", "key 'material' = \"glas\"", "the name of a [[material]]: \"glass\" \"steel\""},
     {"count = [3, 2, 2]", "count = [3, 2.5, 2]", "key 'count' = [3, 2.5, 2]", "[nx, ny, nz], integers >= 1"},

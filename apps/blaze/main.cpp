@@ -25,6 +25,7 @@
 #include "blaze/scene/scene_identity.hpp"
 #include "pipeline/run_log.hpp"
 #include "blaze/sim/schedule.hpp"
+#include "pipeline/scene_params.hpp"
 #include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
 
@@ -135,15 +136,11 @@ int run_scene(const Scene& s, const Options& o) {
   } else {
     particles = build_particles<Real>(s, nullptr);
   }
-  double r_max = 0;
-  for (const auto& t : s.types) r_max = std::max(r_max, t.size());
   // Unless the scene says: polyhedra evaluate each pair once (their pairs are dear: 1.8x on the
   // CPU), spheres from both sides (a sphere pair costs less than its slot's memory traffic).
   const bool once = s.pair_evaluation == PairsKind::automatic ? std::string(Shape::name) != "sphere"
                                                               : s.pair_evaluation == PairsKind::once;
-  const SimulationParams<Real> prm{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
-                                   vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag),
-                                   once ? PairEvaluation::once : PairEvaluation::both_sides, s.output.energy_by_class};
+  const SimulationParams<Real> prm = simulation_params<Real>(s, once);
   const World<Real> world = build_world<Real>(s);
   using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
   // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,

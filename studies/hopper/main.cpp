@@ -27,6 +27,7 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
+#include "pipeline/scene_params.hpp"
 #include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
 
@@ -68,9 +69,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
   const double gate_open = s.study_value("gate_open_time", 0, s.end_time, "s (at most end_time)");
   s.check_study_used();
-  double r_max = 0;
-  for (const auto& t : s.types) r_max = std::max(r_max, t.size());
-  const SimulationParams<Real> sp{s.dt, s.gravity, s.domain_lo, s.domain_hi, s.skin * r_max, s.drag};
+  const SimulationParams<Real> sp = simulation_params<Real>(s);
   const PairTable<Law> laws = build_laws<Law>(s);
   const ParticleState<Real> initial = build_particles<Real>(s, nullptr);
   std::printf("hopper: %zu spheres, dt = %.3g s (%.3f of the critical step %.3g s), impact overlap %.3g%% of the radius\n",

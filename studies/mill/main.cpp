@@ -42,6 +42,7 @@
 #include "blaze/sim/centrifuging.hpp"
 #include "blaze/sim/charge_field.hpp"
 #include "blaze/sim/charge_profile.hpp"
+#include "pipeline/scene_params.hpp"
 #include "pipeline/simulation.hpp"
 
 using namespace blaze;
@@ -59,8 +60,7 @@ int run(const Scene& s) {
   const double first = s.mill.start + s.mill.ramp;  // revolutions count from full speed
   double r_max = 0;
   for (const auto& t : s.types) r_max = std::max(r_max, t.size());
-  const SimulationParams<Real> sp{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
-                                  vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag)};
+  const SimulationParams<Real> sp = simulation_params<Real>(s);
   const ParticleState<Real> balls = build_particles<Real>(s, nullptr);
   Sim sim(sp, build_laws<Law>(s), build_world<Real>(s), balls);
   std::printf("mill: %zu balls, D = %.3g m, L = %.3g m, %.4g rpm (T = %.4g s), dt = %.3g s (%.3f of the critical step)\n"

@@ -63,6 +63,7 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/sim/repose_angle.hpp"
+#include "pipeline/scene_params.hpp"
 #include "pipeline/simulation.hpp"
 #include "studies/repose/repose_geometry.hpp"
 
@@ -144,7 +145,7 @@ int run(const Scene& s, const ReposeSetup& g, const std::vector<std::string>& ov
   const double check = s.study_value("check_interval", s.dt, s.end_time, "s");
   const double rest_speed = s.study_value("rest_speed", 0, 1, "m/s");
   s.check_study_used();
-  const SimulationParams<Real> sp{s.dt, s.gravity, s.domain_lo, s.domain_hi, s.skin * g.d / 2, s.drag};
+  const SimulationParams<Real> sp = simulation_params<Real>(s);
   const PairTable<Law> laws = build_laws<Law>(s);
   const ParticleState<Real> initial = build_particles<Real>(s, nullptr);
   std::printf("repose: %zu beads of d = %.3g m, base R_in = %.3g m (%.1f d), mu_s = %g, mu_r = %g; dt = %.3g s (%.3f of "

@@ -33,6 +33,8 @@ enum class PrecisionKind { float32, float64 };
 enum class BackendKind { automatic, cpu, gpu };
 // Particle-particle pairs evaluated from both sides or once (SimulationParams::pairs).
 enum class PairsKind { automatic, both_sides, once };
+// World lists (pipeline/world_candidates.hpp): automatic (from 8 world objects), on, off.
+enum class WorldListsKind { automatic, on, off };
 
 inline const char* to_string(LawKind k) { return k == LawKind::linear ? "linear" : "hertz"; }
 inline const char* to_string(RollingKind k) { return k == RollingKind::none ? "none" : k == RollingKind::cdt ? "cdt" : "epsd"; }
@@ -169,6 +171,7 @@ struct Scene {
   Vec3<double> domain_lo, domain_hi;  // m
   double skin = 0.2;             // neighbour-list skin / largest bounding radius
   PairsKind pair_evaluation = PairsKind::automatic;  // auto: once for polyhedra, both sides for spheres
+  WorldListsKind world_lists = WorldListsKind::automatic;
   bool force_dt = false;         // run even when dt exceeds the safe fraction of the critical step
   bool force_long_run = false;   // run even when the estimated wall time exceeds kMaxWallTime (run_check.hpp)
   double max_impact_speed = 0;   // m/s, Hertz stiffness estimate (0: from the scene)

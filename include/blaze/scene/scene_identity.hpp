@@ -8,7 +8,7 @@
 // drag, domain, skin and seed (it places the fills); every material, pair, particle type (with a
 // hash of its shape file's bytes), placement (explicit lists hashed: they may hold 1e6 points),
 // wall, cylinder and [study] value. Not in it: end_time (extending a run is what a restart is
-// for), [output], backend, pair_evaluation (bitwise the same results), force_dt, force_long_run
+// for), [output], backend, pair_evaluation and world_lists (bitwise the same results), force_dt, force_long_run
 // and max_impact_speed (validation only: the dt it implies is in the identity).
 #pragma once
 #include <cstdint>

@@ -1,0 +1,26 @@
+// A scene's [simulation] as the Simulation's parameters (pipeline/simulation.hpp), for every
+// program that runs a scene file (blaze run and the studies): the step, gravity, domain, the skin
+// in metres (the scene gives it per largest particle size), drag, how pairs are evaluated, the
+// energy accounts by class ([output] energy_by_class) and the world lists.
+#pragma once
+#include <algorithm>
+#include "blaze/scene/scene.hpp"
+#include "pipeline/simulation.hpp"
+
+namespace blaze {
+
+// pairs_once: the pair evaluation the program chose (the scene's pair_evaluation, resolved for
+// its shape).
+template <class Real>
+SimulationParams<Real> simulation_params(const Scene& s, bool pairs_once = false) {
+  double r_max = 0;
+  for (const auto& t : s.types) r_max = std::max(r_max, t.size());
+  SimulationParams<Real> p{static_cast<Real>(s.dt), vec_cast<Real>(s.gravity), vec_cast<Real>(s.domain_lo),
+                           vec_cast<Real>(s.domain_hi), static_cast<Real>(s.skin * r_max), static_cast<Real>(s.drag),
+                           pairs_once ? PairEvaluation::once : PairEvaluation::both_sides, s.output.energy_by_class};
+  p.world_lists = s.world_lists == WorldListsKind::on ? WorldLists::on : s.world_lists == WorldListsKind::off ? WorldLists::off
+                                                                                                              : WorldLists::automatic;
+  return p;
+}
+
+}  // namespace blaze
