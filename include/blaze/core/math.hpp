@@ -18,6 +18,14 @@ BLAZE_HD inline double floor_r(double x) { return ::floor(x); }
 BLAZE_HD inline float abs_r(float x) { return ::fabsf(x); }
 BLAZE_HD inline double abs_r(double x) { return ::fabs(x); }
 
+// Machine epsilon of the precision (1 ulp at 1).
+template <class T>
+BLAZE_HD constexpr T epsilon_r();
+template <>
+BLAZE_HD constexpr float epsilon_r<float>() { return 1.1920929e-07f; }
+template <>
+BLAZE_HD constexpr double epsilon_r<double>() { return 2.220446049250313e-16; }
+
 template <class T>
 BLAZE_HD constexpr T min_r(T a, T b) { return b < a ? b : a; }
 template <class T>

@@ -1,0 +1,185 @@
+// A triangle mesh as a contact surface (issue 20): a sphere touching one smooth surface gets one
+// contact, wherever the tessellation puts its edges and vertices.
+// Each triangle T offers the contact at the point p of T nearest the sphere's centre x (Voronoi
+// regions of its face, edges and vertices), but only where p is the surface's nearest point near
+// there:
+//   face    x projects inside T (all three in-plane edge tests s_k = (x - a_k) . (n x e_k) >= 0)
+//           and lies in front (d = (x - a) . n > 0): overlap r - d, normal -n;
+//   edge e  p inside edge e, and x projects outside T across e (s_e <= 0) and outside the
+//           neighbour T' across e (T'`s own test, recomputed): then neither face has x over its
+//           interior, and the nearest point of the pair is on e (a convex ridge's wedge);
+//   vertex  p = v, and x projects onto no edge at v: (x - v) . (w - v) <= 0 for every neighbour w
+//           of v (then x's nearest point on every triangle at v is v).
+// In exact arithmetic these regions tile space around a convex ridge or corner, so one triangle
+// offers the contact; in a valley two faces do (two points of the surface touch the sphere). At
+// the regions' shared boundaries (x exactly over an edge or a vertex of a flat tessellation, where
+// the triangles' normals differ in the last bits) rounding could let two triangles offer it or
+// none; so every test is inclusive by a rounding margin, and the offers a particle receives are
+// merged (MeshContacts): offers at the same point with the same normal (within 1e-9 of the
+// radius, 1e-9 rad) are one contact, the deepest kept. A surface seen over a vertex of a flat
+// fan thus pushes as one polygon. An edge of three or more triangles (non-manifold) is treated as
+// open for each of them. Faces act on their front, as planar walls do; edges and vertices push
+// from wherever x is.
+// Sources: the closest-point regions of a triangle (Ericson, Real-Time Collision Detection, 5.1.5);
+// one contact per surface point (Su et al. 2011; Kremmer & Favier 2001).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+#include "blaze/contact/contact_geometry.hpp"
+#include "blaze/core/math.hpp"
+#include "blaze/world/triangle_mesh.hpp"
+
+namespace blaze {
+
+struct MeshTopology {
+  std::vector<std::array<int, 3>> neighbour;  // per triangle and edge k (corner k -> k + 1): the triangle across it, -1 open
+  std::vector<int> adjacency_start;           // per vertex (+1): where its neighbours start in adjacency
+  std::vector<int> adjacency;                 // vertices joined to it by an edge
+};
+
+inline MeshTopology mesh_topology(const TriangleMesh& m) {
+  MeshTopology t;
+  const std::size_t n = m.size();
+  t.neighbour.assign(n, {-1, -1, -1});
+  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edges;  // (triangle, edge k)
+  const auto key = [](int a, int b) {
+    return static_cast<std::uint64_t>(std::min(a, b)) << 32 | static_cast<std::uint64_t>(std::max(a, b));
+  };
+  for (std::size_t f = 0; f < n; ++f)
+    for (std::size_t k = 0; k < 3; ++k) edges[key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])].push_back({static_cast<int>(f), static_cast<int>(k)});
+  for (const auto& e : edges) {
+    const auto& users = e.second;
+    if (users.size() != 2) continue;  // open or non-manifold: no neighbour
+    t.neighbour[static_cast<std::size_t>(users[0].first)][static_cast<std::size_t>(users[0].second)] = users[1].first;
+    t.neighbour[static_cast<std::size_t>(users[1].first)][static_cast<std::size_t>(users[1].second)] = users[0].first;
+  }
+  std::vector<std::vector<int>> around(m.vertices.size());
+  for (const auto& tri : m.triangles)
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t j = 1; j < 3; ++j) around[static_cast<std::size_t>(tri[k])].push_back(tri[(k + j) % 3]);
+  t.adjacency_start.push_back(0);
+  for (auto& a : around) {
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    t.adjacency.insert(t.adjacency.end(), a.begin(), a.end());
+    t.adjacency_start.push_back(static_cast<int>(t.adjacency.size()));
+  }
+  return t;
+}
+
+// What the contact kernels read (device-copyable pointers; the arrays are kept elsewhere;
+// std::array<int, 3> is stored as three ints, so its vectors' data() serve as the int arrays).
+template <class Real>
+struct MeshSurfaceView {
+  const Vec3<Real>* vertex;  // m, current positions
+  const int* triangle;       // 3 vertex indices per triangle (TriangleMesh::triangles' storage)
+  const int* neighbour;      // 3 per triangle (MeshTopology::neighbour's storage)
+  const int* adjacency_start;
+  const int* adjacency;
+};
+
+namespace mesh_detail {
+template <class Real>
+BLAZE_HD Vec3<Real> unit_normal(const Vec3<Real>& a, const Vec3<Real>& b, const Vec3<Real>& c) {
+  const Vec3<Real> n = cross(b - a, c - a);
+  return n * (Real(1) / sqrt_r(norm2(n)));
+}
+// (x - a) . (n x (b - a)): >= 0 when x projects onto the inner side of edge a -> b of a
+// counter-clockwise triangle with unit normal n (m^2).
+template <class Real>
+BLAZE_HD Real edge_side(const Vec3<Real>& x, const Vec3<Real>& a, const Vec3<Real>& b, const Vec3<Real>& n) {
+  return dot(x - a, cross(n, b - a));
+}
+}  // namespace mesh_detail
+
+// The contact triangle t offers sphere (x, r) (above); none when p is not its to offer.
+template <class Real>
+BLAZE_HD ContactGeometry<Real> collide_sphere_mesh_triangle(const Vec3<Real>& x, Real r, const MeshSurfaceView<Real>& m, int t) {
+  using mesh_detail::edge_side;
+  const int* tri = m.triangle + 3 * t;
+  const Vec3<Real> v[3] = {m.vertex[tri[0]], m.vertex[tri[1]], m.vertex[tri[2]]};
+  const Vec3<Real> n = mesh_detail::unit_normal(v[0], v[1], v[2]);
+  const Real d = dot(x - v[0], n);
+  if (!(d < r && d > -r)) return ContactGeometry<Real>::none();
+  // The rounding margin of the region tests (m^2): 64 ulps of the terms' size.
+  const Real reach = sqrt_r(norm2(x - v[0])) + sqrt_r(max_r(norm2(v[1] - v[0]), norm2(v[2] - v[0])));
+  const Real margin = Real(64) * epsilon_r<Real>() * reach * reach;
+  Real s[3];
+  for (int k = 0; k < 3; ++k) s[k] = edge_side(x, v[k], v[k + 1 < 3 ? k + 1 : 0], n);
+  if (s[0] >= -margin && s[1] >= -margin && s[2] >= -margin) {  // face
+    if (!(d > Real(0))) return ContactGeometry<Real>::none();
+    const Real delta = r - d;
+    return {true, -n, delta, x - n * (r - Real(0.5) * delta), r};
+  }
+  // The nearest point on the boundary: inside an edge, or a vertex.
+  Real best2 = Real(-1);
+  int edge = -1, corner = -1;
+  Vec3<Real> p{0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    const Vec3<Real> a = v[k], b = v[k + 1 < 3 ? k + 1 : 0], e = b - a;
+    const Real u = clamp_r(dot(x - a, e) / norm2(e), Real(0), Real(1));
+    const Vec3<Real> q = a + e * u;
+    const Real dist2 = norm2(x - q);
+    if (best2 < Real(0) || dist2 < best2) {
+      best2 = dist2, p = q;
+      edge = u > Real(0) && u < Real(1) ? k : -1;
+      corner = u <= Real(0) ? k : u >= Real(1) ? (k + 1 < 3 ? k + 1 : 0) : -1;
+    }
+  }
+  if (!(best2 < r * r) || best2 == Real(0)) return ContactGeometry<Real>::none();
+  if (edge >= 0) {
+    // x over the other face of the edge: that face offers the contact.
+    const int o = m.neighbour[3 * t + edge];
+    if (o >= 0) {
+      const int* ot = m.triangle + 3 * o;
+      const Vec3<Real> no = mesh_detail::unit_normal(m.vertex[ot[0]], m.vertex[ot[1]], m.vertex[ot[2]]);
+      const Vec3<Real> a = v[edge + 1 < 3 ? edge + 1 : 0], b = v[edge];  // the neighbour runs it b <- a
+      if (edge_side(x, a, b, no) > margin) return ContactGeometry<Real>::none();
+    }
+  } else {
+    const int vi = tri[corner];
+    for (int k = m.adjacency_start[vi]; k < m.adjacency_start[vi + 1]; ++k)
+      if (dot(x - v[corner], m.vertex[m.adjacency[k]] - v[corner]) > margin) return ContactGeometry<Real>::none();
+  }
+  const Real dist = sqrt_r(best2);
+  const Vec3<Real> nrm = (p - x) * (Real(1) / dist);
+  const Real delta = r - dist;
+  return {true, nrm, delta, x + nrm * (r - Real(0.5) * delta), r};
+}
+
+// The offers one particle receives from the triangles of a mesh, merged: an offer at the same
+// point with the same normal as one kept (1e-9 of the radius, 1e-9 rad; float: 1e-4) is the same
+// contact, and the deeper of the two is kept. Holds up to K contacts; more are counted in
+// `dropped` (the deepest K kept).
+template <class Real, int K = 8>
+struct MeshContacts {
+  ContactGeometry<Real> contact[K];
+  int owner[K];  // the triangle that offered the kept one
+  int count = 0;
+  int dropped = 0;
+
+  BLAZE_HD void add(const ContactGeometry<Real>& g, int triangle, Real r) {
+    if (!g.touching) return;
+    const Real same = (sizeof(Real) == 4 ? Real(1e-4) : Real(1e-9));
+    for (int k = 0; k < count; ++k) {
+      if (norm2(contact[k].normal - g.normal) <= same * same && norm2(contact[k].point - g.point) <= same * same * r * r) {
+        if (g.overlap > contact[k].overlap) contact[k] = g, owner[k] = triangle;
+        return;
+      }
+    }
+    if (count < K) {
+      contact[count] = g, owner[count] = triangle, ++count;
+      return;
+    }
+    ++dropped;
+    int shallowest = 0;
+    for (int k = 1; k < K; ++k)
+      if (contact[k].overlap < contact[shallowest].overlap) shallowest = k;
+    if (g.overlap > contact[shallowest].overlap) contact[shallowest] = g, owner[shallowest] = triangle;
+  }
+};
+
+}  // namespace blaze
