@@ -7,9 +7,15 @@
 //   random centres outside within r of the surface, exactly one contact, at the surface's nearest
 //   point (brute force over all triangles), overlap r - distance (1e-12).
 // - A valley (two faces at 120 deg): a sphere touching both gets two face contacts.
+// - Bins (blaze/world/mesh_bins.hpp): the cell holding a point lists every triangle within the
+//   bins' reach of it (brute force over all triangles; an icosphere and the flat grid, cells from
+//   0.4 to 10 times the reach, in double and float lookups); outside the grid no triangle is that
+//   close.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <algorithm>
 #include <random>
+#include "blaze/world/mesh_bins.hpp"
 #include "blaze/world/mesh_surface.hpp"
 #include "blaze/world/planar_polygon.hpp"
 #include "verification/report.hpp"
@@ -206,6 +212,42 @@ BOOST_AUTO_TEST_CASE(a_valley_touches_with_both_faces) {
     // distance to each face: y sin(60 deg)
     BOOST_TEST(t.contacts == 2, y);
     BOOST_TEST(std::fabs(t.overlap - (0.1 - y * std::sin(3.14159265358979 / 3))) < 1e-12, y);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(bins_list_every_triangle_within_reach) {
+  std::mt19937_64 rng(9);
+  for (int which = 0; which < 2; ++which) {
+    const TriangleMesh m = which == 0 ? icosphere(3) : grid(8);
+    for (double cell : {0.02, 0.1, 0.5}) {
+      const double reach = 0.05;
+      const MeshBinsHost b = bin_mesh(m, reach, cell);
+      const MeshBinsView<double> vd{b.origin, 1 / b.cell, b.nx, b.ny, b.nz, b.start.data(), b.entry.data()};
+      const MeshBinsView<float> vf{vec_cast<float>(b.origin), float(1 / b.cell), b.nx, b.ny, b.nz, b.start.data(), b.entry.data()};
+      std::uniform_real_distribution<double> u(-1.2, 1.2);
+      long missing = 0, listed = 0, near = 0, outside_near = 0;
+      for (int k = 0; k < 4000; ++k) {
+        const Vec3<double> x{u(rng), which == 0 ? u(rng) : 0.3 * u(rng), u(rng)};
+        int f0, f1, g0, g1;
+        vd.cell_of(x, f0, f1);
+        vf.cell_of(vec_cast<float>(x), g0, g1);
+        listed += f1 - f0;
+        for (std::size_t t = 0; t < m.size(); ++t) {
+          if (!(norm(x - nearest_on_triangle(x, m.corner(t, 0), m.corner(t, 1), m.corner(t, 2))) < 0.999 * reach)) continue;
+          ++near;
+          if (f1 == f0) ++outside_near;
+          const bool in_d = std::find(b.entry.begin() + f0, b.entry.begin() + f1, static_cast<int>(t)) != b.entry.begin() + f1;
+          const bool in_f = std::find(b.entry.begin() + g0, b.entry.begin() + g1, static_cast<int>(t)) != b.entry.begin() + g1;
+          missing += !in_d + !in_f;
+        }
+      }
+      BOOST_TEST_MESSAGE("bins, " << (which == 0 ? "icosphere" : "grid") << ", cell " << b.cell << " m: " << b.nx * b.ny * b.nz
+                                  << " cells, at most " << b.longest << " triangles in one, " << double(listed) / 4000
+                                  << " listed per point; " << near << " triangles within reach, " << missing << " missing");
+      BOOST_TEST(near > 100);
+      BOOST_TEST(missing == 0);
+      BOOST_TEST(outside_near == 0);
+    }
   }
 }
 
