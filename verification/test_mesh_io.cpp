@@ -17,6 +17,7 @@
 #include <random>
 #include "blaze/io/mesh_io.hpp"
 #include "verification/report.hpp"
+#include "verification/tolerances.hpp"
 
 using namespace blaze;
 
@@ -121,7 +122,7 @@ BOOST_AUTO_TEST_CASE(a_cube_reads_the_same_from_every_format) {
     BOOST_TEST(r.closed(), f);
     BOOST_TEST(r.pieces == 1, f);
     BOOST_TEST(r.flipped == 0, f);
-    BOOST_TEST(std::fabs(m.signed_volume() - 0.125) < 1e-12, f << ": volume " << m.signed_volume());
+    BOOST_TEST(std::fabs(m.signed_volume() - 0.125) < tol::mesh_volume_exact, f << ": volume " << m.signed_volume());
     BOOST_TEST(consistent(m), f);
     std::filesystem::remove(temp(f));
   }
@@ -146,8 +147,7 @@ BOOST_AUTO_TEST_CASE(reversed_triangles_are_turned_back_to_the_majority) {
       BOOST_TEST(consistent(back), level << ", " << fraction);
       BOOST_TEST(r.flipped == (majority_out ? reversed : n - reversed), level << ", " << fraction << ": flipped " << r.flipped);
       const double v = back.signed_volume();
-      // float vertices in the file: the volume to 1e-6
-      BOOST_TEST(std::fabs(std::fabs(v) - v0) < 1e-6 * v0, level << ", " << fraction << ": volume " << v << " vs " << v0);
+      BOOST_TEST(std::fabs(std::fabs(v) - v0) < tol::mesh_volume_float * v0, level << ", " << fraction << ": volume " << v << " vs " << v0);
       BOOST_TEST((v > 0) == majority_out);
       BOOST_TEST((v0 < 4.0 / 3.0 * 3.14159265358979 && v0 > (level >= 2 ? 0.95 : 0.8) * 4.0 / 3.0 * 3.14159265358979));
       std::filesystem::remove(path);
@@ -168,7 +168,7 @@ BOOST_AUTO_TEST_CASE(degenerate_and_repeated_triangles_are_dropped_and_named) {
   BOOST_TEST(r.degenerate == 2);
   BOOST_TEST(r.duplicate == 1);
   BOOST_TEST(r.closed());
-  BOOST_TEST(std::fabs(back.signed_volume() - 1) < 1e-12);
+  BOOST_TEST(std::fabs(back.signed_volume() - 1) < tol::mesh_volume_exact);
   const std::string s = r.summary();
   BOOST_TEST(s.find("2 degenerate triangles dropped (triangles 13, 14)") != std::string::npos, s);
   BOOST_TEST(s.find("1 repeated triangles dropped (triangle 15)") != std::string::npos, s);

@@ -2,10 +2,10 @@
 // one contact per point of the surface it touches, whatever the tessellation.
 // - Flat: a tilted 1 m square tessellated into 2 x 8 x 8 triangles (normals differing in the last
 //   bits) against the same square as one polygon: for spheres anywhere over it, exactly over its
-//   edges and vertices included, one contact with the polygon's overlap and normal (1e-12).
+//   edges and vertices included, one contact with the polygon's overlap and normal.
 // - Convex closed meshes (a cube: coplanar pairs, convex edges and corners; icospheres): for
 //   random centres outside within r of the surface, exactly one contact, at the surface's nearest
-//   point (brute force over all triangles), overlap r - distance (1e-12).
+//   point (brute force over all triangles), overlap r - distance.
 // - A valley (two faces at 120 deg): a sphere touching both gets two face contacts.
 // - Bins (blaze/world/mesh_bins.hpp): the cell holding a point lists every triangle within the
 //   bins' reach of it (brute force over all triangles; an icosphere and the flat grid, cells from
@@ -19,6 +19,7 @@
 #include "blaze/world/mesh_surface.hpp"
 #include "blaze/world/planar_polygon.hpp"
 #include "verification/report.hpp"
+#include "verification/tolerances.hpp"
 
 using namespace blaze;
 
@@ -169,7 +170,7 @@ BOOST_AUTO_TEST_CASE(a_flat_tessellation_pushes_as_one_polygon) {
   BOOST_TEST_MESSAGE("flat tessellation: " << samples << " spheres, " << wrong_count << " without exactly one contact, worst difference "
                                             << worst);
   BOOST_TEST(wrong_count == 0);
-  BOOST_TEST(worst < 1e-12);
+  BOOST_TEST(worst < tol::mesh_flat_as_polygon);
 }
 
 BOOST_AUTO_TEST_CASE(a_convex_mesh_is_touched_once_at_its_nearest_point) {
@@ -197,7 +198,7 @@ BOOST_AUTO_TEST_CASE(a_convex_mesh_is_touched_once_at_its_nearest_point) {
     BOOST_TEST_MESSAGE((which == 0 ? "cube" : "icosphere") << ": " << tested << " spheres, " << wrong_count
                                                           << " without exactly one contact, worst difference " << worst);
     BOOST_TEST(wrong_count == 0, which);
-    BOOST_TEST(worst < 1e-11, which);  // the brute-force reference's own rounding: 2e-12
+    BOOST_TEST(worst < tol::mesh_nearest_point, which);
   }
 }
 
@@ -211,7 +212,7 @@ BOOST_AUTO_TEST_CASE(a_valley_touches_with_both_faces) {
     const Total t = touch(s, {0, y, 0}, 0.1);
     // distance to each face: y sin(60 deg)
     BOOST_TEST(t.contacts == 2, y);
-    BOOST_TEST(std::fabs(t.overlap - (0.1 - y * std::sin(3.14159265358979 / 3))) < 1e-12, y);
+    BOOST_TEST(std::fabs(t.overlap - (0.1 - y * std::sin(3.14159265358979 / 3))) < tol::mesh_valley_overlap, y);
   }
 }
 

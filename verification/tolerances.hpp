@@ -496,4 +496,31 @@ constexpr double ledger_balance = 1e-3;
 // missing half of the pair (both-sides booking) is off by 50%.
 constexpr double thesis_estimate_head_on = 1e-3;
 
+// --- world lists (issue 19; verification/test_world_lists.cpp) ---
+// Objects listed per ball over the world's objects in the small turning mill: measured 0.022 to
+// 0.11 (0.33 to 1.7 of 15) for skins of 0.05 r to r (2026-12); a list of a quarter of the world
+// would no longer prune. (That every contact is listed is exact: none may be missing.)
+constexpr double world_lists_listed_fraction = 0.25;
+// A surface speed bound against its closed form (omega times a distance, a few operations in
+// double): rounding only, ~1e-16 relative.
+constexpr double surface_speed_closed_form = 1e-12;
+
+// --- triangle meshes (issue 20; verification/test_mesh_io.cpp, test_mesh_surface.cpp) ---
+// A cube's volume from its file (ASCII with 17 digits, or binary float32 of exactly
+// representable coordinates) against the exact value: only the divergence sum's rounding, ~1e-16.
+constexpr double mesh_volume_exact = 1e-12;
+// An icosphere's volume after a binary STL round trip: each coordinate rounded to float32 (6e-8
+// relative) moves the volume by ~1e-7 at most; 1e-6 is 10x that.
+constexpr double mesh_volume_float = 1e-6;
+// One contact from a tilted flat tessellation against one polygon (overlap relative to itself,
+// normal difference): measured 4.8e-14, the normals' last-bit differences (2026-12); 1e-12.
+constexpr double mesh_flat_as_polygon = 1e-12;
+// The one contact of a convex mesh against the brute-force nearest point (overlap / r, normal):
+// measured 1.1e-16 (cube) and 2.1e-12 (icospheres: the reference's own projections round);
+// 1e-11 is 5x that.
+constexpr double mesh_nearest_point = 1e-11;
+// A valley's face overlaps against r - y sin(60 deg): the distance to a plane through the
+// origin, exact to rounding (1e-16).
+constexpr double mesh_valley_overlap = 1e-12;
+
 }  // namespace blaze::tol
