@@ -5,9 +5,9 @@
 //          (the state: i's copy of the pair's, for a tangential spring's |F_e|^2 / (2 k_t))
 //          (each pair once, from its lower index, with the very call ContactForces and
 //          PairForces make for that pair: collide(lower, higher) on the same list);
-//   walls  sum over the planar polygons and cylinders w of Law(m_i, m_w).stored_energy(
-//          collide_world(i, w))                                                          [J]
-//   wall_contacts  the number of those world objects i touches (polygons and cylinders alike).
+//   walls  sum over i's contacts with world objects (world_contacts.hpp: a mesh's merged ones) of
+//          Law(m_i, m_w).stored_energy(contact, state)                                   [J]
+//   wall_contacts  the number of those contacts.
 // The energies are formed in double (the law's stored_energy returns double) and written per
 // particle; reduce_in_order (exec/primitives.hpp, through kernels/sample_tally.hpp) adds them in
 // a fixed order per backend, so the total is deterministic (no atomics) and the backends agree up
@@ -19,6 +19,7 @@
 #include "blaze/world/world.hpp"
 #include "kernels/broad_phase_kernels.hpp"
 #include "kernels/contact_history.hpp"
+#include "kernels/world_contacts.hpp"
 
 namespace blaze {
 
@@ -56,16 +57,16 @@ struct StoredContactEnergy {
       const auto state = Law::kHistory ? history.load(list.offset(k, i)) : Law::State::zero();
       pairs += laws(mi, p.material[j]).stored_energy(g, state);
     }
-    const auto wall = [&](const ContactGeometry<Real>& g, int material, int w) {
+    for_each_world_contact(shape, bi, world, i, [&](const auto& g, int material, int, WallKey key, const auto*) {
       if (!g.touching) return;
       auto state = Law::State::zero();
-      if constexpr (Law::kHistory)
-        for (int h = 0; h < wall_history.slots; ++h)
-          if (wall_history.object[wall_history.at(h, i)] == w) state = wall_history.load(h, i);
+      if constexpr (Law::kHistory) {
+        const int h = wall_history.find(i, key);
+        if (h >= 0) state = wall_history.load(h, i);
+      }
       walls += laws(mi, material).stored_energy(g, state);
       ++touched;
-    };
-    world.visit(i, [&](const auto& object, int w) { wall(shape.collide_world(bi, object), object.material, w); });
+    });
     out.pairs[i] = pairs;
     out.walls[i] = walls;
     out.wall_contacts[i] = touched;

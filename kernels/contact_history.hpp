@@ -5,9 +5,13 @@
 //                    other's, so a particle's thread reads and writes only its own entries (no
 //                    atomics, the same order on every backend) and consecutive threads touch
 //                    consecutive addresses. Pairs evaluated once keep only the lower index's copy.
-//   world objects    a few slots per particle, each holding the object's index (-1: free) and its
-//                    state, at h * stride + i (WallHistoryView); a contact finds its slot by the
-//                    object, takes a free one when it closes and frees it when it opens.
+//   world objects    a few slots per particle, each holding the contact's key (WallKey: the
+//                    object's index, or a mesh triangle's key; -1: free) and its state, at
+//                    h * stride + i (WallHistoryView); a contact finds its slot by the key, takes
+//                    a free one when it closes and frees it when it opens. A mesh contact that
+//                    rolled onto another triangle inherits the slot of the one it left (a
+//                    triangle sharing a vertex with its new one that no contact of this step
+//                    holds), so a tessellation does not reset the spring.
 // A rebuild moves particles in memory and builds a new list, so the pair states are carried over
 // by the pair's identity (RemapPairHistory: the entry of the same two particles in the previous
 // list, through the sort's permutation), and the wall slots move with their particle (the
@@ -66,25 +70,45 @@ struct WallHistoryView {
   static constexpr int kMaxSlots = 8;  // the bit set of slots seen in one step
   Real* field[N > 0 ? N : 1];
   int used;
-  std::int16_t* object;  // world object index per slot, -1: free (a scene has at most 32767 objects)
+  WallKey* object;  // the contact's key per slot, -1: free
   std::uint8_t* overflow;  // per particle: 1 when a contact found no free slot (ran without state)
   Index stride;
   int slots;
 
   BLAZE_HD std::size_t at(int h, Index i) const { return static_cast<std::size_t>(h) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(i); }
-  // The slot of object w for particle i, claimed (zeroed) if it has none; -1 if all are taken.
-  BLAZE_HD int slot(Index i, int w) const {
-    int free = -1;
+  // The slot of `key` for particle i; else one not seen this step (bit h of `seen`) whose key
+  // inherit(old key) accepts, re-keyed with its state kept; else a free one, claimed (zeroed);
+  // -1 if all are taken.
+  template <class Inherit>
+  BLAZE_HD int slot(Index i, WallKey key, unsigned seen, const Inherit& inherit) const {
+    int free = -1, heir = -1;
     for (int h = 0; h < slots; ++h) {
-      const int o = object[at(h, i)];
-      if (o == w) return h;
-      if (o < 0 && free < 0) free = h;
+      const WallKey o = object[at(h, i)];
+      if (o == key) return h;
+      if (o < 0) {
+        if (free < 0) free = h;
+      } else if (heir < 0 && !((seen >> h) & 1u) && inherit(o)) {
+        heir = h;
+      }
+    }
+    if (heir >= 0) {
+      object[at(heir, i)] = key;
+      return heir;
     }
     if (free >= 0) {
-      object[at(free, i)] = static_cast<std::int16_t>(w);
+      object[at(free, i)] = key;
       for (int c = 0; c < used; ++c) field[c][at(free, i)] = Real(0);
     }
     return free;
+  }
+  BLAZE_HD int slot(Index i, WallKey key) const {
+    return slot(i, key, 0u, [](WallKey) { return false; });
+  }
+  // The slot holding `key` for particle i, or -1 (nothing claimed).
+  BLAZE_HD int find(Index i, WallKey key) const {
+    for (int h = 0; h < slots; ++h)
+      if (object[at(h, i)] == key) return h;
+    return -1;
   }
   BLAZE_HD State load(int h, Index i) const {
     State st = State::zero();

@@ -3,7 +3,8 @@
 // lifter faces: the thesis's 2D mill; 64 lifter rows of a SAG mill).
 // Built at each neighbour-list rebuild from the bounding sphere (x_i, r_i) and the objects as
 // placed then: object w is listed when some point of it lies within r_i + skin of x_i
-// (within_reach, planar_polygon.hpp and cylinder.hpp; 1e-4 more for rounding). The list stays valid while no particle
+// (within_reach, planar_polygon.hpp and cylinder.hpp; 1e-4 more for rounding; a mesh when its
+// bins, built with that reach or more, list triangles in x_i's cell). The list stays valid while no particle
 // has moved more than skin / 2 (the rebuild check) and no point of a moving object has moved
 // more than skin / 2: together less than the skin, so a body inside its bounding sphere that
 // touches w later was within reach of it at the build. The rebuild check (broad_phase_kernels.hpp)
@@ -44,6 +45,8 @@ struct BuildWorldCandidates {
       if (!world.pose || world.pose[w].active) take(within_reach(x, reach, world.polygons[k]), w);
     for (int k = 0; k < world.cylinder_count; ++k, ++w)
       if (!world.pose || world.pose[w].active) take(within_reach(x, reach, world.cylinders[k]), w);
+    for (int k = 0; k < world.mesh_count; ++k, ++w)  // its bins' reach covers reach (mesh_wall.hpp)
+      if (!world.pose || world.pose[w].active) take(mesh_near(x, world.meshes[k], world.pose_of(w)), w);
     count[i] = c > kWorldCandidates ? kWorldCandidatesOverflow : static_cast<std::uint8_t>(c);
   }
 };

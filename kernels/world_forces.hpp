@@ -6,7 +6,8 @@
 // objects in the particle's list are tested. A contact with a patch (contact_patch.hpp) adds the
 // patch's moment about the contact point to the torque. A law with history keeps each wall
 // contact's state in a slot of the particle keyed by the object (contact_history.hpp): found or
-// claimed when touching, freed when the contact opens.
+// claimed when touching, freed when the contact opens. A triangle mesh (blaze/world/mesh_wall.hpp)
+// gives one contact per point of its surface (world_contacts.hpp), each with its own slot.
 // When the run keeps energy accounts (blaze/particles/energy_ledger.hpp), each contact books
 // the drive's work (F . v_w(p) + M . omega) dt to the drive column and to its object's class
 // column, and adds its force F and torque r x F + M to the class's sums of the particle
@@ -25,6 +26,7 @@
 #include "blaze/particles/particle_store.hpp"
 #include "kernels/contact_history.hpp"
 #include "kernels/contact_pair.hpp"
+#include "kernels/world_contacts.hpp"
 
 namespace blaze {
 
@@ -54,8 +56,8 @@ struct WorldForces {
     Real thesis = 0;    // J, the thesis's estimate over i's wall contacts (Features::thesis_power)
     if (p.ledger.on())
       for (int k = 0; k < kClassSumReals; ++k) p.ledger.class_sums[static_cast<std::size_t>(k) * p.ledger.n + i] = Real(0);
-    // Object w (polygons first, then cylinders: the world's object index).
-    const auto apply = [&](const auto& g, int material, int w) {
+    // A contact with object w (world_contacts.hpp: key, and for a mesh the group of its contacts).
+    const auto apply = [&](const auto& g, int material, int w, WallKey key, const MeshGroup<Real>* group) {
       if (!g.touching) return;
       if (!touched) f = p.force.get(i), touched = true;
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
@@ -68,10 +70,10 @@ struct WorldForces {
       const Law& law = laws(p.material[i], material);
       const Real m_eff = Real(1) / p.inv_mass[i];
       int h = -1;  // the contact's slot (laws with history)
-      (void)h;
+      (void)h, (void)key, (void)group;
       auto state = typename Law::State{};
       if constexpr (Law::kHistory) {
-        h = history.slot(i, w);
+        h = group ? mesh_contact_slot(history, i, key, seen, *group, world, w) : history.slot(i, key);
         state = h >= 0 ? history.load(h, i) : Law::State::zero();
         if (h < 0) history.overflow[i] = 1;  // ran without its state: the store grows at the next rebuild
         else seen |= 1u << h;
@@ -109,7 +111,7 @@ struct WorldForces {
         p.ledger.sum(cls, 3, i) += tc.x, p.ledger.sum(cls, 4, i) += tc.y, p.ledger.sum(cls, 5, i) += tc.z;
       }
     };
-    world.visit(i, [&](const auto& object, int w) { apply(shape.collide_world(body, object), object.material, w); });
+    for_each_world_contact(shape, body, world, i, apply);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (!touched) return;
     if (p.ledger.on()) p.ledger.column[kLedgerDrive][i] += work;

@@ -1,14 +1,14 @@
 // The contact store: the state of every open contact of a law with history (tangential and
 // rolling springs), on one memory space; kernels/contact_history.hpp has its views, kernels and
 // layout. Pair states are aligned with the neighbour list (one per entry, each side its own copy);
-// wall states sit in a few slots per particle keyed by the world object. Both are carried over
+// wall states sit in a few slots per particle keyed by the contact (WallKey). Both are carried over
 // every rebuild by the contacts' identity: after the sort and the new list (after_rebuild), a pair
 // state follows its two particles into their new entry, a wall slot follows its particle. A
 // snapshot keys them by permanent particle ids (and the object), so a restart rebuilds them
 // whatever the memory order.
 //
 // Memory per particle: the list's capacity x `used` reals (pairs) plus a scratch field of the same
-// size for the remap, and slots x (used reals + 2 B) for walls; none for a law without history.
+// size for the remap, and slots x (used reals + 4 B) for walls; none for a law without history.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -29,10 +29,10 @@ class ContactStore {
   static constexpr int kFields = N > 0 ? N : 1;
 
   // `used`: reals per contact (N, or fewer when a later part of the law is off); `objects`: the
-  // world's object count (slots per particle: min(objects, 3) to begin with, more on overflow).
+  // most wall contacts a particle may hold (slots per particle: min(objects, 3) to begin with,
+  // more on overflow).
   void configure(int used, int objects) {
     if (used < 0 || used > N) throw std::logic_error("contact store: more state reals than the law has");
-    if (objects > 32767) throw std::invalid_argument("contact store: at most 32767 world objects");
     used_ = used;
     objects_ = objects;
     slots_ = std::min(objects, 3);
@@ -77,7 +77,7 @@ class ContactStore {
     // Wall slots: grown by one when a contact found none free since the last rebuild.
     const int grow = n > 0 && stride_ > 0 && reduce_max(Space{}, std::min(n, stride_), ValueOf<std::uint8_t>{overflow_.data()}, 0) > 0;
     const int slots = std::min(slots_ + grow, std::min(objects_, WallHistoryView<Real, N>::kMaxSlots));
-    gather_rows(wall_object_, order, n, slots, std::int16_t(-1));
+    gather_rows(wall_object_, order, n, slots, WallKey(-1));
     for (int c = 0; c < used_; ++c) gather_rows(wall_[c], order, n, slots, Real(0));
     slots_ = slots;
     stride_ = n;
@@ -85,9 +85,9 @@ class ContactStore {
   }
 
   std::size_t bytes() const {
-    std::size_t b = scratch_.size() * sizeof(Real) + wall_object_.size() * sizeof(std::int16_t) + overflow_.size();
+    std::size_t b = scratch_.size() * sizeof(Real) + wall_object_.size() * sizeof(WallKey) + overflow_.size();
     for (int c = 0; c < kFields; ++c) b += (pair_[c].size() + wall_[c].size()) * sizeof(Real);
-    return b + scratch_rows_.size() * sizeof(Real) + scratch_objects_.size() * sizeof(std::int16_t);
+    return b + scratch_rows_.size() * sizeof(Real) + scratch_objects_.size() * sizeof(WallKey);
   }
 
   // On the host, keyed by ids (`id`: the store's particle ids in memory order; `list`: the current
@@ -162,7 +162,7 @@ class ContactStore {
     slots_ = std::min(slots, WallHistoryView<Real, N>::kMaxSlots);
     stride_ = n;
     const std::size_t rows = static_cast<std::size_t>(slots_) * static_cast<std::size_t>(n);
-    std::vector<std::int16_t> objects(rows, -1);
+    std::vector<WallKey> objects(rows, -1);
     std::vector<std::vector<Real>> w(used_, std::vector<Real>(rows, Real(0)));
     std::fill(taken.begin(), taken.end(), 0);
     for (std::size_t k = 0; k < s.wall_ids.size(); ++k) {
@@ -192,7 +192,7 @@ class ContactStore {
   void lay_walls(Index n) {
     stride_ = n;
     const std::size_t rows = static_cast<std::size_t>(slots_) * static_cast<std::size_t>(n);
-    fill(wall_object_, rows, std::int16_t(-1));
+    fill(wall_object_, rows, WallKey(-1));
     for (int c = 0; c < used_; ++c) fill(wall_[c], rows, Real(0));
     fill(overflow_, static_cast<std::size_t>(n), std::uint8_t(0));
   }
@@ -204,13 +204,13 @@ class ContactStore {
     b.swap(scratch);
   }
   Buffer<Real, Space>& scratch_for(Real) { return scratch_rows_; }
-  Buffer<std::int16_t, Space>& scratch_for(std::int16_t) { return scratch_objects_; }
+  Buffer<WallKey, Space>& scratch_for(WallKey) { return scratch_objects_; }
 
   int used_ = 0, objects_ = 0, slots_ = 0;
   Index stride_ = 0;  // the wall rows' stride (particles at the last rebuild)
   Buffer<Real, Space> pair_[kFields], wall_[kFields];
   Buffer<Real, Space> scratch_, scratch_rows_;
-  Buffer<std::int16_t, Space> wall_object_, scratch_objects_;
+  Buffer<WallKey, Space> wall_object_, scratch_objects_;
   Buffer<std::uint8_t, Space> overflow_;
 };
 

@@ -111,10 +111,11 @@ class Simulation {
     check_params(params);
     check_materials(laws, world, particles);
     reside_shape();
+    check_meshes(world);
     store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic() || params.energy_ledger,
                   Features::thesis_power);  // checks the lengths
     check_finite(particles, 0);
-    world_.upload(world, 0, static_cast<double>(params.dt));
+    world_.upload(world, 0, static_cast<double>(params.dt), mesh_reach(params, max_of(particles.radius)));
     lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
     initial_count_ = store_.size();
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
@@ -138,9 +139,10 @@ class Simulation {
     materials_only.material = snap.store.material;
     check_materials(laws, world, materials_only);
     reside_shape();
+    check_meshes(world);
     store_.restore(snap.store);
     steps_ = snap.steps;
-    world_.upload(world, steps_, static_cast<double>(params.dt));
+    world_.upload(world, steps_, static_cast<double>(params.dt), mesh_reach(params, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField))));
     lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
     if (world.dynamic() || params.energy_ledger) store_.keep_ledger(Features::thesis_power);
     initial_count_ = snap.initial_count;
@@ -322,6 +324,11 @@ class Simulation {
     for (Real r : v) m = std::max(m, r);
     return m;
   }
+  // The meshes' bins reach (mesh_wall.hpp): the largest bounding radius plus the skin, 0.1% more
+  // than the world lists' own rounding allowance.
+  static double mesh_reach(const SimulationParams<Real>& prm, Real r_max) {
+    return (static_cast<double>(r_max) + static_cast<double>(prm.skin)) * 1.001;
+  }
   static void check_params(const SimulationParams<Real>& params) {
     if (!(params.dt > 0)) throw std::invalid_argument("simulation: dt must be > 0 s");
     if (!(params.skin >= 0)) throw std::invalid_argument("simulation: skin must be >= 0 m");
@@ -349,7 +356,15 @@ class Simulation {
         if (used[b]) need(a, b, "particle-particle contacts");
       for (const auto& w : world.polygons) need(a, w.material, "a planar wall");
       for (const auto& w : world.cylinders) need(a, w.material, "a cylinder");
+      for (const auto& w : world.meshes) need(a, w.material, "a mesh wall");
     }
+  }
+  void check_meshes(const World<Real>& world) const {
+    if (world.meshes.empty()) return;
+    if (!shape_.mesh_walls_supported())
+      throw std::invalid_argument("mesh walls: polyhedra against triangle meshes are not supported yet (spheres are)");
+    if (static_cast<double>(world.object_count()) + static_cast<double>(world.triangle_count()) > 2147483647.0)
+      throw std::invalid_argument("mesh walls: more world objects and triangles than a contact key holds (2^31)");
   }
 
   template <Stage S>
@@ -417,7 +432,9 @@ class Simulation {
       int used = 0;  // the most any pair's law uses (a rolling spring only under model C)
       for (int k = 0; k < PairTable<Law>::kMaxMaterials * PairTable<Law>::kMaxMaterials; ++k)
         if (laws_.defined[k]) used = std::max(used, laws_.entries[k].state_reals());
-      contacts_.configure(used, static_cast<int>(world.polygons.size() + world.cylinders.size()));
+      // A mesh may hold several contacts of one particle (a valley, a corner).
+      const double walls = static_cast<double>(world.polygons.size() + world.cylinders.size()) + 3.0 * static_cast<double>(world.meshes.size());
+      contacts_.configure(used, static_cast<int>(std::min(walls, 1e6)));
       broad_.keep_previous_list();
     }
   }

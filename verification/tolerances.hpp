@@ -522,5 +522,20 @@ constexpr double mesh_nearest_point = 1e-11;
 // A valley's face overlaps against r - y sin(60 deg): the distance to a plane through the
 // origin, exact to rounding (1e-16).
 constexpr double mesh_valley_overlap = 1e-12;
+// Spheres over a flat 800-triangle mesh against one polygon, double, 0.6 s (test_mesh_walls.cpp):
+// the mesh's face normals differ from the polygon's in the last bits, and bouncing contacts carry
+// that on; a moving mesh adds the round trip into its frame. Measured 2.6e-15 (still plate, also
+// along the grid lines: 0), 5.6e-11 (vibrating), 1.5e-14 (turning) (2026-12); the 1e-9.
+constexpr double mesh_walls_flat_trajectory = 1e-9;
+// The same in float: measured 1.1e-6 and 1.5e-6 (float's 6e-8 carried through the bounces);
+// 1e-4 is 60x that and still 200x below what a doubled edge contact gives (2e-4 in double).
+constexpr double mesh_walls_flat_trajectory_float = 1e-4;
+// The horizontal share of a sphere's rebound from a mesh vertex or ridge: measured 0 and 1.2e-15
+// (the vertex and edge normals x - p are vertical to rounding); a face's normal would tilt it by
+// sin 20 deg = 0.34.
+constexpr double mesh_walls_feature_normal = 1e-9;
+// A sphere at rest in a mesh valley after 0.8 s of damped settling (e = 0.1): |x| / r measured
+// 2.9e-17 and the height's error / overlap 1.5e-10 (2026-12); 1e-6 leaves the settling's tail room.
+constexpr double mesh_walls_valley_rest = 1e-6;
 
 }  // namespace blaze::tol

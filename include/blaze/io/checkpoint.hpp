@@ -1,13 +1,13 @@
 // Checkpoint files: a SimulationSnapshot plus the driver's own text (run metadata), versioned and
 // checksummed, written atomically.
 //
-// Layout (little-endian, version 2):
+// Layout (little-endian, version 4):
 //   "BLZCKPT" '\0' | u32 version | u32 bytes per real (4 or 8) | u64 payload bytes | payload |
 //   u64 FNV-1a 64 of the payload
 //   payload: u64 steps, i64 initial count, i64 removed count, f64 removed mass, f64 removed energy,
 //            u32 real arrays, each u64 length + values; u64 n, n material bytes, n type bytes,
 //            n ids (i32); contact store: u32 reals per contact, pair ids (u64 length + i32
-//            pairs), pair values (u64 length + reals), wall ids, wall objects (i16), wall values;
+//            pairs), pair values (u64 length + reals), wall ids, wall keys (i32), wall values;
 //            u64 text length + text
 // Writing goes to <path>.tmp, is flushed and fsync'ed, then renamed over <path>: a run killed
 // mid-write (even by SIGKILL) leaves the previous checkpoint whole. Reading rejects a wrong magic,
@@ -35,7 +35,7 @@ struct CheckpointError : std::runtime_error {
 namespace checkpoint_detail {
 
 constexpr char kMagic[8] = {'B', 'L', 'Z', 'C', 'K', 'P', 'T', '\0'};
-constexpr std::uint32_t kVersion = 3;  // 2: the removed particles' energy; 3: the contact store
+constexpr std::uint32_t kVersion = 4;  // 2: the removed particles' energy; 3: the contact store; 4: 32-bit wall keys (meshes)
 
 inline std::uint64_t fnv1a(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -194,7 +194,7 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
   ct.pair_ids = r.array<Index>();
   ct.pair_values = r.array<Real>();
   ct.wall_ids = r.array<Index>();
-  ct.wall_objects = r.array<std::int16_t>();
+  ct.wall_objects = r.array<WallKey>();
   ct.wall_values = r.array<Real>();
   const auto per = static_cast<std::size_t>(ct.used);
   if (ct.pair_ids.size() % 2 != 0 || ct.pair_values.size() != ct.pair_ids.size() / 2 * per ||

@@ -8,9 +8,14 @@
 // Each sub-law reads its part at its offset as Vec3s (a tangential spring: 3 reals, m or N; a
 // rolling spring: 3 reals, N m).
 #pragma once
+#include <cstdint>
 #include "blaze/core/vec3.hpp"
 
 namespace blaze {
+
+// A wall contact's key in the store: its world object's index, or for a triangle mesh
+// mesh_key_base + the triangle (blaze/world/mesh_wall.hpp); -1: a free slot.
+using WallKey = std::int32_t;
 
 template <class Real, int N>
 struct ContactState {

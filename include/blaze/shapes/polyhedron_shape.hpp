@@ -450,6 +450,21 @@ struct PolyhedronShape {
     return g;
   }
 
+  // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp): a sphere type's, merged per
+  // surface point. Polyhedra against meshes are not built yet: a Simulation with both refuses to
+  // start (mesh_walls_supported), so this never sees one.
+  bool mesh_walls_supported() const {
+    for (int t = 0; t < table.count; ++t)
+      if (table.type[t].vertex_count != 0) return false;
+    return true;
+  }
+  template <int K>
+  BLAZE_HD void collide_mesh(const Body& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,
+                             MeshContacts<Real, K>& out) const {
+    const PolyhedronData<Real>& A = data(a.type);
+    if (A.vertex_count == 0) collide_sphere_mesh(a.x, A.bounding_radius, s, m, pose, out);
+  }
+
   // Rotation steps (see the header comment).
   BLAZE_HD Vec3<Real> kick_rotation(const ParticleView<Real>& p, Index i, const Quat<Real>& q, const Vec3<Real>& w,
                                     const Vec3<Real>& torque, Real h) const {

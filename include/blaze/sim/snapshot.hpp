@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <vector>
+#include "blaze/laws/contact_state.hpp"
 #include "blaze/particles/particle_store.hpp"
 
 namespace blaze {
@@ -17,7 +18,7 @@ struct ContactSnapshot {
   std::vector<Index> pair_ids;        // (id_i, id_j) per pair state, i's copy
   std::vector<Real> pair_values;      // `used` per pair state
   std::vector<Index> wall_ids;        // particle id per wall state
-  std::vector<std::int16_t> wall_objects;
+  std::vector<WallKey> wall_objects;  // the contacts' keys (object, or mesh triangle)
   std::vector<Real> wall_values;
 };
 

@@ -55,6 +55,8 @@ struct Pose {
 
   BLAZE_HD Vec3<Real> place(const Vec3<Real>& x_ref) const { return rotation * x_ref + shift; }
   BLAZE_HD Vec3<Real> turn(const Vec3<Real>& v_ref) const { return rotation * v_ref; }
+  // The reference point that the pose places at x: x_ref = R^T (x - shift).
+  BLAZE_HD Vec3<Real> to_reference(const Vec3<Real>& x) const { return rotation.transpose_times(x - shift); }
   // Velocity of the object's material point now at x (m/s).
   BLAZE_HD Vec3<Real> velocity_at(const Vec3<Real>& x) const { return cross(omega, x - origin) + velocity; }
 };

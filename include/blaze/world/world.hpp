@@ -1,6 +1,6 @@
 // World objects (thesis section 3.2.1): everything that is not a particle. One host description,
 // one device store, one view; kernels loop over each object kind with that kind's collide().
-// New kinds (triangle meshes) add an array here and a collide() overload.
+// Object index: polygons first, then cylinders, then triangle meshes (mesh_wall.hpp).
 // Objects may move (motion.hpp): each keeps its reference geometry, and a phase of the step
 // (kernels/move_world.hpp) places the current geometry and records the pose; the world kernel
 // reads the pose for the wall's velocity at a contact and skips objects that were removed.
@@ -13,6 +13,7 @@
 #include "blaze/exec/buffer.hpp"
 #include "blaze/particles/energy_ledger.hpp"
 #include "blaze/world/cylinder.hpp"
+#include "blaze/world/mesh_wall.hpp"
 #include "blaze/world/motion.hpp"
 #include "blaze/world/planar_polygon.hpp"
 
@@ -22,13 +23,22 @@ template <class Real>
 struct World {
   std::vector<PlanarPolygon<Real>> polygons;
   std::vector<Cylinder<Real>> cylinders;
-  // Per object (polygons first, then cylinders: the world's object index); empty: all static.
+  std::vector<MeshWall> meshes;
+  // Per object (polygons, cylinders, meshes: the world's object index); empty: all static.
   std::vector<Motion> motions;
   // Per object, the contact class its dissipation is booked under (energy_ledger.hpp); empty:
   // all plain walls.
   std::vector<ContactClass> classes;
-  bool empty() const { return polygons.empty() && cylinders.empty(); }
-  int object_count() const { return static_cast<int>(polygons.size() + cylinders.size()); }
+  bool empty() const { return polygons.empty() && cylinders.empty() && meshes.empty(); }
+  int object_count() const { return static_cast<int>(polygons.size() + cylinders.size() + meshes.size()); }
+  // The object index of mesh k.
+  int mesh_object(std::size_t k) const { return static_cast<int>(polygons.size() + cylinders.size() + k); }
+  // Triangles over all meshes.
+  long triangle_count() const {
+    long t = 0;
+    for (const auto& m : meshes) t += static_cast<long>(m.mesh.size());
+    return t;
+  }
   // Any object moves or is removed at some time.
   bool dynamic() const {
     for (const auto& m : motions)
@@ -54,7 +64,7 @@ struct World {
   // A bound on how fast the object's surface moves (m/s): the peak speed of its points
   // (motion.hpp), over a polygon's vertices (the farthest from any axis, as it is convex) or, for
   // a cylinder, its centre's distance from the axis plus its half-diagonal; 0 for a cylinder
-  // turning about its own axis (its surface stays where it is).
+  // turning about its own axis (its surface stays where it is); over a mesh's vertices.
   double surface_speed(int object) const {
     const Motion m = motion(object);
     if (!m.moves()) return 0;
@@ -65,6 +75,8 @@ struct World {
       for (int k = 0; k < g.vertex_count; ++k) v.push_back(vec_cast<double>(g.vertex[k]));
       return peak_speed(m, v);
     }
+    const auto nc = static_cast<int>(cylinders.size());
+    if (object >= np + nc) return peak_speed(m, meshes[static_cast<std::size_t>(object - np - nc)].mesh.vertices);
     const Cylinder<Real>& c = cylinders[static_cast<std::size_t>(object - np)];
     const Vec3<double> a = vec_cast<double>(c.axis), o = vec_cast<double>(c.origin);
     const double r = static_cast<double>(c.radius), l = static_cast<double>(c.length);
@@ -111,6 +123,14 @@ World<Real> placed(const World<Real>& ref, const std::vector<Pose<Real>>& poses)
     if (poses[k].active) w.cylinders.push_back(moved(c, poses[k]));
     ++k;
   }
+  for (const auto& m : ref.meshes) {
+    if (poses[k].active) {
+      MeshWall placed_mesh = m;
+      for (auto& v : placed_mesh.mesh.vertices) v = vec_cast<double>(poses[k].place(vec_cast<Real>(v)));
+      w.meshes.push_back(std::move(placed_mesh));
+    }
+    ++k;
+  }
   return w;
 }
 
@@ -125,6 +145,10 @@ struct WorldView {
   int polygon_count;
   const Cylinder<Real>* cylinders;
   int cylinder_count;
+  const MeshObject<Real>* meshes;
+  int mesh_count;
+  MeshSurfaceView<Real> surface;  // every mesh's vertices, triangles, neighbours (mesh_wall.hpp)
+  int mesh_key_base;              // a mesh contact's history key: mesh_key_base + its triangle
   const Pose<Real>* pose;  // per object; null: a static world (every object still, none removed)
   const ContactClass* object_class;  // per object; null: all plain walls (energy_ledger.hpp)
   // Per particle i, its world list: objects candidate[k * stride + i], k < candidate_count[i]
@@ -135,8 +159,9 @@ struct WorldView {
 
   BLAZE_HD ContactClass class_of(int w) const { return object_class ? object_class[w] : ContactClass::wall; }
   BLAZE_HD bool active(int w) const { return !pose || pose[w].active; }
+  BLAZE_HD const Pose<Real>* pose_of(int w) const { return pose ? pose + w : nullptr; }
   // f(object, w) for each object present (not removed) that particle i may touch: its world list,
-  // or every object; in object index order (polygons first, then cylinders) either way.
+  // or every object; in object index order (polygons, cylinders, meshes) either way.
   template <class F>
   BLAZE_HD void visit(Index i, F&& f) const {
     if (candidate) {
@@ -146,7 +171,8 @@ struct WorldView {
           const int w = candidate[static_cast<std::size_t>(k) * candidate_stride + i];
           if (!active(w)) continue;
           if (w < polygon_count) f(polygons[w], w);
-          else f(cylinders[w - polygon_count], w);
+          else if (w < polygon_count + cylinder_count) f(cylinders[w - polygon_count], w);
+          else f(meshes[w - polygon_count - cylinder_count], w);
         }
         return;
       }
@@ -156,6 +182,8 @@ struct WorldView {
       if (active(w)) f(polygons[k], w);
     for (int k = 0; k < cylinder_count; ++k, ++w)
       if (active(w)) f(cylinders[k], w);
+    for (int k = 0; k < mesh_count; ++k, ++w)
+      if (active(w)) f(meshes[k], w);
   }
 };
 
@@ -168,6 +196,7 @@ struct WorldMotionView {
   const Cylinder<Real>* cylinder_ref;
   Cylinder<Real>* cylinders;
   int cylinder_count;
+  int mesh_count;  // meshes keep their vertices: only their poses move
   const Motion* motion;
   Pose<Real>* pose;
   std::uint64_t* step;  // per object: the step its pose is for (t = step dt)
@@ -178,7 +207,8 @@ template <class Real, class Space>
 class WorldStore {
  public:
   // The world as it stands after `step` steps of dt (a restored run continues where it was).
-  void upload(const World<Real>& w, std::uint64_t step, double dt) {
+  // mesh_reach (m): the bins' reach (mesh_wall.hpp: the largest bounding radius plus the skin).
+  void upload(const World<Real>& w, std::uint64_t step, double dt, double mesh_reach) {
     if (!w.motions.empty() && w.motions.size() != static_cast<std::size_t>(w.object_count()))
       throw std::invalid_argument("world: motions must be given for every object or none");
     dynamic_ = w.dynamic();
@@ -186,6 +216,7 @@ class WorldStore {
     if (!w.classes.empty() && w.classes.size() != static_cast<std::size_t>(w.object_count()))
       throw std::invalid_argument("world: contact classes must be given for every object or none");
     from_host(classes_, w.classes);
+    upload_meshes(w, mesh_reach);
     if (!dynamic_) {
       from_host(polygons_, w.polygons);
       from_host(cylinders_, w.cylinders);
@@ -208,14 +239,25 @@ class WorldStore {
     from_host(steps_, std::vector<std::uint64_t>(static_cast<std::size_t>(n), step));
   }
   WorldView<Real> view() const {
-    return {polygons_.data(), static_cast<int>(polygons_.size()), cylinders_.data(), static_cast<int>(cylinders_.size()),
-            dynamic_ ? poses_.data() : nullptr, classes_.size() ? classes_.data() : nullptr};
+    const int np = static_cast<int>(polygons_.size()), nc = static_cast<int>(cylinders_.size()), nm = static_cast<int>(meshes_.size());
+    return {polygons_.data(),
+            np,
+            cylinders_.data(),
+            nc,
+            meshes_.data(),
+            nm,
+            {mesh_vertex_.data(), mesh_triangle_.data(), mesh_neighbour_.data(), mesh_adjacency_start_.data(), mesh_adjacency_.data()},
+            np + nc + nm,
+            dynamic_ ? poses_.data() : nullptr,
+            classes_.size() ? classes_.data() : nullptr};
   }
   WorldMotionView<Real> motion_view() {
     return {polygon_ref_.data(), polygons_.data(), static_cast<int>(polygons_.size()), cylinder_ref_.data(), cylinders_.data(),
-            static_cast<int>(cylinders_.size()), motions_.data(), poses_.data(), steps_.data(), dt_};
+            static_cast<int>(cylinders_.size()), static_cast<int>(meshes_.size()), motions_.data(), poses_.data(), steps_.data(), dt_};
   }
-  bool empty() const { return polygons_.size() == 0 && cylinders_.size() == 0; }
+  bool empty() const { return polygons_.size() == 0 && cylinders_.size() == 0 && meshes_.size() == 0; }
+  // Per mesh: the most triangles one of its bins' cells lists (0 without meshes).
+  const std::vector<long>& mesh_longest_cell() const { return longest_cell_; }
   // Some object moves or is removed at a time: the step places the world first (move-world).
   bool dynamic() const { return dynamic_; }
   // The step each object's pose is for (t = step dt; all objects advance together); null in a
@@ -225,12 +267,33 @@ class WorldStore {
   std::vector<Pose<Real>> poses() const { return to_host(poses_, poses_.size()); }
 
  private:
+  void upload_meshes(const World<Real>& w, double reach) {
+    MeshArrays<Real> a;
+    if (!w.meshes.empty()) a = mesh_arrays<Real>(w.meshes, reach);
+    from_host(mesh_vertex_, a.vertex);
+    from_host(mesh_triangle_, a.triangle);
+    from_host(mesh_neighbour_, a.neighbour);
+    from_host(mesh_adjacency_start_, a.adjacency_start);
+    from_host(mesh_adjacency_, a.adjacency);
+    from_host(mesh_bin_start_, a.bin_start);
+    from_host(mesh_bin_entry_, a.bin_entry);
+    for (std::size_t k = 0; k < a.objects.size(); ++k) {
+      a.objects[k].bins.start = mesh_bin_start_.data() + a.bin_start_offset[k];
+      a.objects[k].bins.entry = mesh_bin_entry_.data() + a.bin_entry_offset[k];
+    }
+    from_host(meshes_, a.objects);
+    longest_cell_ = a.longest_cell;
+  }
   Buffer<PlanarPolygon<Real>, Space> polygons_, polygon_ref_;
   Buffer<Cylinder<Real>, Space> cylinders_, cylinder_ref_;
   Buffer<Motion, Space> motions_;
   Buffer<Pose<Real>, Space> poses_;
   Buffer<std::uint64_t, Space> steps_;
   Buffer<ContactClass, Space> classes_;
+  Buffer<MeshObject<Real>, Space> meshes_;
+  Buffer<Vec3<Real>, Space> mesh_vertex_;
+  Buffer<int, Space> mesh_triangle_, mesh_neighbour_, mesh_adjacency_start_, mesh_adjacency_, mesh_bin_start_, mesh_bin_entry_;
+  std::vector<long> longest_cell_;
   bool dynamic_ = false;
   double dt_ = 0;
 };

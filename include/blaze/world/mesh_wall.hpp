@@ -1,0 +1,146 @@
+// Triangle-mesh walls as world objects (issue 20). A mesh is one object (one pose, motion,
+// material and contact class) made of many triangles; its surface rules are mesh_surface.hpp's
+// (one contact per point of one smooth surface) and its triangles are found through bins in its
+// own reference frame (mesh_bins.hpp), so a mesh that moves rigidly never moves its vertices:
+// the particle is taken into the mesh's frame, x_ref = R^T (x - u), the contact is formed there
+// and its normal and point are turned back, n = R n_ref, p = R p_ref + u.
+// All meshes of a world share one set of arrays (vertices, triangles, neighbours, vertex
+// adjacency, bins), indices global over the meshes; each mesh keeps its bins and the range of
+// its triangles (MeshObject).
+// A wall contact's history key (kernels/contact_history.hpp) is its object index for polygons and
+// cylinders, and mesh_key_base + the triangle's global index for a mesh (mesh_key_base = the
+// world's object count), so a particle may hold several contacts with one mesh (a valley, a
+// corner) and each keeps its own spring.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include "blaze/world/mesh_bins.hpp"
+#include "blaze/world/mesh_surface.hpp"
+#include "blaze/world/motion.hpp"
+
+namespace blaze {
+
+// The host description: the mesh in its reference frame (m; the scene's scale and placement
+// already applied), repaired (triangle_mesh.hpp).
+struct MeshWall {
+  std::string name;
+  TriangleMesh mesh;
+  std::uint8_t material = 0;
+};
+
+// What the kernels read of one mesh.
+template <class Real>
+struct MeshObject {
+  MeshBinsView<Real> bins;  // entries are global triangle indices
+  int first_triangle;       // its triangles are [first_triangle, first_triangle + triangle_count)
+  int triangle_count;
+  std::uint8_t material;
+  BLAZE_HD bool owns(int triangle) const { return triangle >= first_triangle && triangle < first_triangle + triangle_count; }
+};
+
+// The meshes' arrays, concatenated, on the host (WorldStore uploads them and points each
+// object's bins at its part: bin_start_offset, bin_entry_offset).
+template <class Real>
+struct MeshArrays {
+  std::vector<Vec3<Real>> vertex;
+  std::vector<int> triangle, neighbour, adjacency_start, adjacency, bin_start, bin_entry;
+  std::vector<MeshObject<Real>> objects;
+  std::vector<std::size_t> bin_start_offset, bin_entry_offset;
+  std::vector<long> longest_cell;  // per mesh: the most triangles one cell lists
+};
+
+// The bins' cell: the larger of the reach and the mean edge length (a cell then lists the
+// triangles within about two reaches of its points; mesh_bins.hpp).
+inline double mesh_cell_size(const TriangleMesh& m, double reach) {
+  double edges = 0;
+  for (std::size_t t = 0; t < m.size(); ++t)
+    for (int k = 0; k < 3; ++k) edges += norm(m.corner(t, (k + 1) % 3) - m.corner(t, k));
+  const double mean = m.size() ? edges / (3.0 * static_cast<double>(m.size())) : 0;
+  return std::fmax(std::fmax(reach, mean), 1e-6 * std::fmax(m.extent(), 1e-300));
+}
+
+// `reach` (m): the largest bounding radius a particle has plus the neighbour-list skin (the world
+// lists test every mesh whose bins list triangles in the particle's cell; the contact finds every
+// triangle within a particle's radius there).
+template <class Real>
+MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) {
+  if (!(reach > 0)) throw std::invalid_argument("mesh walls: the bins' reach must be > 0 m");
+  MeshArrays<Real> a;
+  long triangles = 0, vertices = 0;
+  for (const auto& w : meshes) triangles += static_cast<long>(w.mesh.size()), vertices += static_cast<long>(w.mesh.vertices.size());
+  if (triangles > 100000000L || vertices > 300000000L)
+    throw std::invalid_argument("mesh walls: at most 1e8 triangles in all, got " + std::to_string(triangles));
+  a.adjacency_start.push_back(0);
+  for (const auto& w : meshes) {
+    if (w.mesh.size() == 0) throw std::invalid_argument("mesh wall '" + w.name + "': no triangles");
+    const int v0 = static_cast<int>(a.vertex.size()), t0 = static_cast<int>(a.triangle.size() / 3);
+    const MeshTopology topo = mesh_topology(w.mesh);
+    for (const auto& v : w.mesh.vertices) a.vertex.push_back(vec_cast<Real>(v));
+    for (std::size_t t = 0; t < w.mesh.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        a.triangle.push_back(v0 + w.mesh.triangles[t][static_cast<std::size_t>(k)]);
+        const int o = topo.neighbour[t][static_cast<std::size_t>(k)];
+        a.neighbour.push_back(o < 0 ? -1 : t0 + o);
+      }
+    const int adjacency0 = static_cast<int>(a.adjacency.size());
+    for (std::size_t v = 0; v + 1 < topo.adjacency_start.size(); ++v) a.adjacency_start.push_back(adjacency0 + topo.adjacency_start[v + 1]);
+    for (int u : topo.adjacency) a.adjacency.push_back(v0 + u);
+    const MeshBinsHost b = bin_mesh(w.mesh, reach, mesh_cell_size(w.mesh, reach));
+    MeshObject<Real> o{};
+    o.bins.origin = vec_cast<Real>(b.origin);
+    o.bins.inv_cell = static_cast<Real>(1 / b.cell);
+    o.bins.nx = b.nx, o.bins.ny = b.ny, o.bins.nz = b.nz;
+    o.first_triangle = t0;
+    o.triangle_count = static_cast<int>(w.mesh.size());
+    o.material = w.material;
+    a.bin_start_offset.push_back(a.bin_start.size());
+    a.bin_entry_offset.push_back(a.bin_entry.size());
+    a.bin_start.insert(a.bin_start.end(), b.start.begin(), b.start.end());
+    for (int t : b.entry) a.bin_entry.push_back(t0 + t);
+    a.objects.push_back(o);
+    a.longest_cell.push_back(b.longest);
+  }
+  return a;
+}
+
+// The contacts sphere (x, r) has with mesh m (pose: where it stands; null: as built), merged per
+// point of the surface (mesh_surface.hpp), in the world frame; added to `out`.
+template <class Real, int K>
+BLAZE_HD void collide_sphere_mesh(const Vec3<Real>& x, Real r, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m,
+                                  const Pose<Real>* pose, MeshContacts<Real, K>& out) {
+  const Vec3<Real> xr = pose ? pose->to_reference(x) : x;
+  int first = 0, last = 0;
+  m.bins.cell_of(xr, first, last);
+  for (int e = first; e < last; ++e) {
+    const int t = m.bins.entry[e];
+    out.add(collide_sphere_mesh_triangle(xr, r, s, t), t, r);
+  }
+  if (pose)
+    for (int k = 0; k < out.count; ++k) {
+      out.contact[k].normal = pose->turn(out.contact[k].normal);
+      out.contact[k].point = pose->place(out.contact[k].point);
+    }
+}
+
+// Mesh m may hold a contact of any body within the bins' reach of x (the world lists' test:
+// its bins list triangles in x's cell).
+template <class Real>
+BLAZE_HD bool mesh_near(const Vec3<Real>& x, const MeshObject<Real>& m, const Pose<Real>* pose) {
+  int first = 0, last = 0;
+  m.bins.cell_of(pose ? pose->to_reference(x) : x, first, last);
+  return last > first;
+}
+
+// Triangles a and b share a vertex (a contact rolling from one to the other keeps its history).
+BLAZE_HD inline bool share_vertex(const int* triangle, int a, int b) {
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q)
+      if (triangle[3 * a + p] == triangle[3 * b + q]) return true;
+  return false;
+}
+
+}  // namespace blaze

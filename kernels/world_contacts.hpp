@@ -1,0 +1,51 @@
+// A particle's contacts with the world, object by object in index order (the world kernel and
+// the stored-energy diagnostic walk them the same way):
+//   f(geometry, material, w, key, group)
+// for every object w present that the particle may touch (WorldView::visit): a polygon or a
+// cylinder gives the shape's collide_world() (touching or not), key w and a null group; a triangle
+// mesh gives each of its merged contacts (blaze/world/mesh_wall.hpp, at most kMeshContacts),
+// key mesh_key_base + the triangle that offered it, and the group of them all (for the history's
+// hand-over between triangles, kernels/contact_history.hpp).
+#pragma once
+#include <type_traits>
+#include "blaze/world/world.hpp"
+
+namespace blaze {
+
+constexpr int kMeshContacts = 8;  // contacts one particle may have with one mesh (more: the deepest kept)
+template <class Real>
+using MeshGroup = MeshContacts<Real, kMeshContacts>;
+
+template <class Shape, class Body, class Real, class F>
+BLAZE_HD void for_each_world_contact(const Shape& shape, const Body& body, const WorldView<Real>& world, Index i, F&& f) {
+  world.visit(i, [&](const auto& object, int w) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(object)>, MeshObject<Real>>) {
+      MeshGroup<Real> group;
+      shape.collide_mesh(body, world.surface, object, world.pose_of(w), group);
+      for (int k = 0; k < group.count; ++k)
+        f(group.contact[k], static_cast<int>(object.material), w, static_cast<WallKey>(world.mesh_key_base + group.owner[k]), &group);
+    } else {
+      f(shape.collide_world(body, object), static_cast<int>(object.material), w, static_cast<WallKey>(w),
+        static_cast<const MeshGroup<Real>*>(nullptr));
+    }
+  });
+}
+
+// The slot a mesh contact with key `key` takes (contact_history.hpp): its own, or the slot of a
+// triangle of the same mesh sharing a vertex with its triangle that no contact of the group
+// holds and no contact of this step has used, or a free one.
+template <class History, class Real>
+BLAZE_HD int mesh_contact_slot(const History& history, Index i, WallKey key, unsigned seen, const MeshGroup<Real>& group,
+                               const WorldView<Real>& world, int w) {
+  const MeshObject<Real>& mesh = world.meshes[w - world.polygon_count - world.cylinder_count];
+  const int t = key - world.mesh_key_base;
+  return history.slot(i, key, seen, [&](WallKey old) {
+    const int u = old - world.mesh_key_base;
+    if (old < world.mesh_key_base || !mesh.owns(u)) return false;
+    for (int k = 0; k < group.count; ++k)
+      if (group.owner[k] == u) return false;
+    return share_vertex(world.surface.triangle, t, u);
+  });
+}
+
+}  // namespace blaze
