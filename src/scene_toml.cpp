@@ -21,6 +21,7 @@
 #include "blaze/scene/critical_step.hpp"
 #include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "blaze/io/mesh_io.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "blaze/world/planar_polygon.hpp"
 #include "blaze/grid/grid_spec.hpp"
@@ -802,6 +803,66 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
   }
 }
 
+// A [[mesh]]'s file: as written (from the working directory, as shape files are), else beside
+// the scene file.
+std::string mesh_path(const std::string& file, const std::string& scene) {
+  if (std::ifstream(file).good() || file.empty() || file[0] == '/') return file;
+  const auto slash = scene.find_last_of('/');
+  const std::string beside = slash == std::string::npos ? file : scene.substr(0, slash + 1) + file;
+  return std::ifstream(beside).good() ? beside : file;
+}
+
+// [[mesh]] (MeshSpec): read, welded, repaired, placed.
+void read_meshes(const toml::table& root, const std::string& file, Scene& s) {
+  const auto materials = material_names(s);
+  const auto items = tables(root, "mesh", file);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const std::string label = item_label("mesh", k), prefix = "mesh[" + std::to_string(k) + "]";
+    Fields f(*items[k], label, file,
+             {"name", "file", "material", "scale", "rotate", "translate", "flip", "motion", "remove_time", "contact_class"});
+    MeshSpec m;
+    m.file = f.string("file", "a path to an .stl (ASCII or binary) or .obj file");
+    m.name = f.string_or("name", m.file, "a non-empty name");
+    m.material = lookup(f, "material", materials, "material");
+    m.scale = f.number_or("scale", 1, {0, 1e9, true, false, "m per file unit (0.001 for a file in mm)"});
+    m.translate = f.vec3_or("translate", {0, 0, 0}, position("m"));
+    m.flip = f.boolean_or("flip", false);
+    if (const toml::node* r = f.get("rotate")) {
+      if (!r->is_table()) f.fail(*r, "rotate", "a table: rotate = { axis = [x, y, z], degrees = a }");
+      Fields rf(*r->as_table(), label + " rotate", file, {"axis", "degrees"});
+      m.axis = rf.vec3("axis", {-1e9, 1e9, false, false, "(direction)"});
+      if (!(norm(m.axis) > 0)) rf.fail(*rf.get("axis"), "axis", "a non-zero direction");
+      m.axis = m.axis * (1 / norm(m.axis));
+      m.degrees = rf.number("degrees", {-1e6, 1e6, false, false, "degrees, right-handed about axis"});
+    }
+    m.path = mesh_path(m.file, file);
+    MeshReport report;
+    try {
+      m.mesh = load_mesh(m.path, report);
+    } catch (const std::exception& e) {
+      f.fail(*f.get("file"), "file", std::string("a readable, valid mesh: ") + e.what());
+    }
+    const double half = 0.5 * m.degrees * 3.14159265358979323846 / 180;
+    const Mat3<double> rot = Mat3<double>::rotation(
+        Quat<double>{std::cos(half), std::sin(half) * m.axis.x, std::sin(half) * m.axis.y, std::sin(half) * m.axis.z});
+    for (auto& v : m.mesh.vertices) {
+      v = rot * (v * m.scale) + m.translate;
+      if (!(std::fabs(v.x) <= kMaxCoordinate && std::fabs(v.y) <= kMaxCoordinate && std::fabs(v.z) <= kMaxCoordinate))
+        f.fail(*f.get(f.has("scale") ? "scale" : "file"), f.has("scale") ? "scale" : "file",
+               "vertices within " + Scene::shortest(kMaxCoordinate) + " m of the origin once placed");
+    }
+    if (m.flip)
+      for (auto& t : m.mesh.triangles) std::swap(t[1], t[2]);
+    m.report = report.summary();
+    if (!m.report.empty()) s.notes.push_back("note: " + f.where_of("file") + ": " + label + " '" + m.path + "': " + m.report);
+    m.motion = read_motion(f, file, label, prefix, s);
+    m.contact_class = read_contact_class(f);
+    note_wall_speed(s, label, f.where_of("motion"), peak_speed(m.motion, m.mesh.vertices));
+    f.note(s, prefix + ".", {"file", "scale", "translate"});
+    s.meshes.push_back(std::move(m));
+  }
+}
+
 // [mill] (include/blaze/scene/mill_geometry.hpp): a drum shell, end plates and lifter rows, all
 // turning together, added to the scene's cylinders and walls.
 void read_mill(const toml::table& root, const std::string& file, Scene& s) {
@@ -884,6 +945,7 @@ void check_pairs_complete(const toml::table& root, const std::string& file, cons
   for (const auto& t : s.types) particle_materials.insert(t.material);
   for (const auto& w : s.walls) world_materials.insert(w.material);
   for (const auto& c : s.cylinders) world_materials.insert(c.material);
+  for (const auto& m : s.meshes) world_materials.insert(m.material);
   auto need = [&](int a, int b) {
     if (!s.pair(a, b))
       throw SceneError(where(root.source(), file) + ": no [[pair]] for materials \"" + s.materials[static_cast<std::size_t>(a)].name +
@@ -1055,7 +1117,7 @@ void check_resolution(Scene& s) {
 Scene read(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(root, o);
   static const std::set<std::string> known = {"simulation", "output", "material", "pair", "particle_type",
-                                              "lattice", "particles", "fill", "wall", "cylinder", "mill", "study"};
+                                              "lattice", "particles", "fill", "wall", "cylinder", "mesh", "mill", "study"};
   for (const auto& [k, v] : root)
     if (!known.count(std::string(k.str()))) {
       std::string allowed;
@@ -1076,6 +1138,7 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
   if (total == 0) throw SceneError(file + ": no particles: add a [[lattice]], [[particles]] or [[fill]]");
   if (total > kMaxParticles) throw SceneError(file + ": " + std::to_string(total) + " particles; at most 2^31 - 1");
   read_world(root, file, s);
+  read_meshes(root, file, s);
   read_mill(root, file, s);
   check_pairs_complete(root, file, s);
   check_time_step(table(root, "simulation", file), file, s);

@@ -8,8 +8,9 @@
 //              orientation (w, x, y, z), mass, id, type, material as point data
 //   polyhedra  every polyhedral particle's faces as VTK_POLYGON cells in world position, with the
 //              particle's id, type and velocity as cell data
-//   world      planar polygons (VTK_POLYGON) and cylinders (VTK_QUAD strips) with material,
-//              object index and kind (0 polygon, 1 cylinder) as cell data
+//   world      planar polygons (VTK_POLYGON), cylinders (VTK_QUAD strips) and meshes
+//              (VTK_TRIANGLE) with material, object index (within its kind) and kind (0 polygon,
+//              1 cylinder, 2 mesh) as cell data
 // Files are written to a temporary name and renamed, so a reader never sees half a file.
 #pragma once
 #include <cstdint>
@@ -48,7 +49,7 @@ template <> constexpr const char* vtk_type<std::uint8_t>() { return "UInt8"; }
 // One unstructured grid, assembled in memory and written at once.
 class VtuFile {
  public:
-  enum CellType : std::uint8_t { kVertex = 1, kPolygon = 7, kQuad = 9 };
+  enum CellType : std::uint8_t { kVertex = 1, kTriangle = 5, kPolygon = 7, kQuad = 9 };
 
   template <class T>
   void points(const std::vector<T>& xyz) {
@@ -235,6 +236,19 @@ void write_world_vtu(const std::string& path, const World<Real>& w, int segments
       material.push_back(c.material);
       object.push_back(static_cast<std::int32_t>(k));
       kind.push_back(1);
+    }
+  }
+  for (std::size_t k = 0; k < w.meshes.size(); ++k) {
+    const TriangleMesh& m = w.meshes[k].mesh;
+    const auto first = static_cast<std::int64_t>(x.size() / 3);
+    for (const auto& v : m.vertices) point(v);
+    for (const auto& t : m.triangles) {
+      conn.insert(conn.end(), {first + t[0], first + t[1], first + t[2]});
+      offsets.push_back(static_cast<std::int64_t>(conn.size()));
+      types.push_back(VtuFile::kTriangle);
+      material.push_back(w.meshes[k].material);
+      object.push_back(static_cast<std::int32_t>(k));
+      kind.push_back(2);
     }
   }
   VtuFile f;

@@ -175,6 +175,7 @@ inline CriticalStep critical_step(const Scene& s) {
   for (const auto& t : s.types) particle[static_cast<std::size_t>(t.material)] = true;
   for (const auto& w : s.walls) world[static_cast<std::size_t>(w.material)] = true;
   for (const auto& cy : s.cylinders) world[static_cast<std::size_t>(cy.material)] = true;
+  for (const auto& m : s.meshes) world[static_cast<std::size_t>(m.material)] = true;
   const int n = static_cast<int>(s.materials.size());
   for (int a = 0; a < n; ++a) {
     if (!particle[static_cast<std::size_t>(a)]) continue;

@@ -14,6 +14,7 @@
 #include "blaze/core/vec3.hpp"
 #include "blaze/scene/mill_geometry.hpp"
 #include "blaze/world/motion.hpp"
+#include "blaze/world/triangle_mesh.hpp"
 
 namespace blaze {
 
@@ -133,6 +134,26 @@ struct CylinderSpec {  // drum: particles inside, contact on the inner surface
   }
 };
 
+// A triangle-mesh wall from an STL or OBJ file (blaze/io/mesh_io.hpp): read, welded, repaired
+// (blaze/world/triangle_mesh.hpp), then placed: x = R (scale x_file) + translate, R the rotation
+// by `degrees` about `axis`. Its triangles act on the side their normals point to (flip = true
+// turns them all), edges and vertices from any side (blaze/world/mesh_surface.hpp).
+struct MeshSpec {
+  std::string name;             // optional; defaults to the file's name
+  std::string file;             // as written in the scene
+  std::string path;             // where it was read from
+  int material = 0;
+  double scale = 1;             // m per file unit
+  Vec3<double> axis{0, 0, 1};   // unit (rotate)
+  double degrees = 0;           // rotate
+  Vec3<double> translate;       // m
+  bool flip = false;
+  Motion motion;
+  ContactClass contact_class = ContactClass::wall;
+  TriangleMesh mesh;            // m, placed
+  std::string report;           // what the repair found (empty: nothing)
+};
+
 struct OutputSpec {
   std::string directory;          // created if missing
   double csv_interval = 0;        // s between CSV rows (0: none)
@@ -190,6 +211,7 @@ struct Scene {
   std::vector<FillSpec> fills;
   std::vector<WallSpec> walls;
   std::vector<CylinderSpec> cylinders;
+  std::vector<MeshSpec> meshes;
   MillSpec mill;  // [mill]: its shell, end plates and lifters are in cylinders and walls (named "mill ...")
   std::vector<StudyValue> study;
   // "file:line" of the keys that derived sizes and run checks blame, by their --set name
@@ -234,11 +256,12 @@ struct Scene {
       if (!v.used) throw SceneError(v.where + ": [study]: unknown key '" + v.key + "' (this study does not read it)");
   }
 
-  // The fastest any moving wall or cylinder moves (m/s; motion.hpp's peak_speed).
+  // The fastest any moving wall, cylinder or mesh moves (m/s; motion.hpp's peak_speed).
   double fastest_wall() const {
     double v = 0;
     for (const auto& w : walls) v = std::fmax(v, peak_speed(w.motion, w.vertices));
     for (const auto& c : cylinders) v = std::fmax(v, peak_speed(c.motion, c.rim()));
+    for (const auto& m : meshes) v = std::fmax(v, peak_speed(m.motion, m.mesh.vertices));
     return v;
   }
 

@@ -86,22 +86,17 @@ World<Real> build_world(const Scene& s) {
     w.polygons.push_back(PlanarPolygon<Real>::make(p.vertices, static_cast<std::uint8_t>(p.material), p.rim_edges));
   for (const auto& c : s.cylinders)
     w.cylinders.push_back(Cylinder<Real>::make(c.origin, c.axis, c.radius, c.length, static_cast<std::uint8_t>(c.material)));
-  // motions only where an object moves or leaves (a static world carries none: no cost)
-  bool dynamic = false;
-  for (const auto& p : s.walls) dynamic = dynamic || !p.motion.is_static();
-  for (const auto& c : s.cylinders) dynamic = dynamic || !c.motion.is_static();
-  if (dynamic) {
-    for (const auto& p : s.walls) w.motions.push_back(p.motion);
-    for (const auto& c : s.cylinders) w.motions.push_back(c.motion);
-  }
-  // contact classes only where some object is not a plain wall
-  bool classed = false;
-  for (const auto& p : s.walls) classed = classed || p.contact_class != ContactClass::wall;
-  for (const auto& c : s.cylinders) classed = classed || c.contact_class != ContactClass::wall;
-  if (classed) {
-    for (const auto& p : s.walls) w.classes.push_back(p.contact_class);
-    for (const auto& c : s.cylinders) w.classes.push_back(c.contact_class);
-  }
+  for (const auto& m : s.meshes) w.meshes.push_back({m.name, m.mesh, static_cast<std::uint8_t>(m.material)});
+  // motions and classes in object order (polygons, cylinders, meshes)
+  std::vector<Motion> motions;
+  std::vector<ContactClass> classes;
+  for (const auto& p : s.walls) motions.push_back(p.motion), classes.push_back(p.contact_class);
+  for (const auto& c : s.cylinders) motions.push_back(c.motion), classes.push_back(c.contact_class);
+  for (const auto& m : s.meshes) motions.push_back(m.motion), classes.push_back(m.contact_class);
+  // motions only where an object moves or leaves (a static world carries none: no cost), classes
+  // only where some object is not a plain wall
+  if (std::any_of(motions.begin(), motions.end(), [](const Motion& m) { return !m.is_static(); })) w.motions = motions;
+  if (std::any_of(classes.begin(), classes.end(), [](ContactClass c) { return c != ContactClass::wall; })) w.classes = classes;
   return w;
 }
 
