@@ -14,7 +14,7 @@
 // are kept, this run's added after them). Options: --out DIR, --skin S
 // (skin in radii, default 0.2), --pairs auto|both_sides|once (SimulationParams::pairs; auto:
 // polyhedra once, spheres from both sides), --min-n N, --max-n N, --tag TAG, --cases
-// spheres,polyhedra,packed,surfaces,skip,mill,lifters,largest (default all but largest and lifters).
+// spheres,polyhedra,packed,surfaces,skip,mill,lifters,mesh,largest (default all but largest, lifters and mesh).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -217,6 +217,14 @@ int main(int argc, char** argv) {
     for (int lifter_rows : {0, 8, 16, 32, 64})
       for (WorldLists lists : {WorldLists::automatic, WorldLists::off})
         rows.push_back(mill_case(gpu ? 10000 : 2000, gpu ? 20000 : 1000, true, lifter_rows, lists));
+    print_rows(rows, first);
+  }
+  if (wanted("mesh")) {  // the world phase against the size of a mesh (issue 20)
+    const std::size_t first = rows.size();
+    const long n = gpu ? 1000000L : 20000L;
+    std::vector<long> sizes_t = {0L, 1000L, 10000L, 100000L};
+    if (gpu) sizes_t.push_back(1000000L);
+    for (long triangles : sizes_t) rows.push_back(mesh_box_case(n, triangles, 20, gpu ? 200 : 40));
     print_rows(rows, first);
   }
   write_csv(file, earlier, rows, at);

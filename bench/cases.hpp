@@ -310,6 +310,58 @@ void tile_floor(World<Real>& world, int tiles) {
     }
 }
 
+// The dense bed's box (sphere_case) with its six walls as one triangle mesh of about `triangles`
+// triangles (each quadrilateral wall an n x n grid of cell pairs, welded along the box's edges),
+// or as the six polygons (triangles = 0): the world phase's cost against the mesh's size
+// (issue 20: a 1e5-triangle mesh within 1.5x the polygons' world phase).
+inline Row mesh_box_case(long n, long triangles, long warmup, long steps) {
+  using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
+  const double m = kDensity * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius;
+  const double dt = kPi * std::sqrt(0.5 * m / kStiffness) / 25;
+  auto scene = gravity_packing<float>(static_cast<int>(n), kRadius, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
+  scene.params.skin = static_cast<float>(g_skin_fraction * kRadius);
+  scene.params.pairs = pairs_for(false);
+  int surfaces = scene.world.object_count();
+  if (triangles > 0) {
+    const int walls = static_cast<int>(scene.world.polygons.size());
+    const int grid = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(triangles) / (2.0 * walls)))));
+    TriangleMesh box;
+    for (const auto& w : scene.world.polygons) {
+      if (w.vertex_count != 4) throw std::logic_error("mesh box: the bed's walls are quadrilaterals");
+      Vec3<double> c[4];
+      for (int k = 0; k < 4; ++k) c[k] = vec_cast<double>(w.vertex[k]);
+      const int base = static_cast<int>(box.vertices.size());
+      for (int j = 0; j <= grid; ++j)
+        for (int i = 0; i <= grid; ++i) {
+          const double s = double(i) / grid, t = double(j) / grid;
+          box.vertices.push_back(c[0] + s * (c[1] - c[0]) + t * (c[3] - c[0]) + s * t * (c[2] - c[1] - c[3] + c[0]));
+        }
+      for (int j = 0; j < grid; ++j)
+        for (int i = 0; i < grid; ++i) {
+          const int p = base + j * (grid + 1) + i;
+          box.triangles.push_back({p, p + 1, p + grid + 2});
+          box.triangles.push_back({p, p + grid + 2, p + grid + 1});
+        }
+    }
+    MeshReport report;
+    weld(box, report);
+    report = repair(box, "bench box", report);
+    World<float> world;
+    world.meshes.push_back({"box", box, scene.world.polygons.front().material});
+    scene.world = world;
+    surfaces = static_cast<int>(box.size());
+  }
+  PairTable<Law> laws;
+  laws.set(0, 0, make_law<Law>());
+  laws.set(0, 1, make_law<Law>());
+  Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(scene.params, laws, scene.world,
+                                                                                               scene.particles);
+  const std::string name = triangles > 0 ? "dense-bed-mesh" : "dense-bed-walls";
+  Row row = measure(sim, "sphere", "linear", "float", name.c_str(), surfaces, warmup, steps);
+  if (sim.removed_count() != 0) std::printf("WARNING: %d spheres left the box\n", static_cast<int>(sim.removed_count()));
+  return row;
+}
+
 enum class PolyScene { free_fall, packed };
 
 // Polyhedra of one shape (about 1 cm), linear law (k = 1e5 N/m, e = 0.5), float, dt = t_c/25.
