@@ -15,6 +15,7 @@
 #include "blaze/laws/contact_law.hpp"
 #include "blaze/particles/particle_store.hpp"
 #include "blaze/sim/features.hpp"
+#include "blaze/world/motion.hpp"
 
 namespace blaze {
 
@@ -70,6 +71,30 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
     if constexpr (Law::kRolling)  // spheres (isotropic inertia): 1/I_r = sum 1 / (I + m r^2)
       m.inv_rolling_inertia = rolling_term(p, a.body.index, g.point - a.body.x) + rolling_term(p, j, g.point - bj.x);
     return laws(a.material, p.material[j]).evaluate(g, m, state, dt);
+  }
+}
+
+// F on particle i (and a moment on i) from its contact g with a world object standing at `pose`
+// (null: still; blaze/world/motion.hpp), whose material law is `law`: the wall's velocity at the
+// point enters v_rel and its spin the relative spin; the wall's mass is infinite (m_eff = m_i, and
+// the rolling inertia is i's alone). v_point: v_rel at the contact point (for the thesis's estimate).
+template <class Kinematics, class Features, class Law, class Real, class Body, class Geometry>
+BLAZE_HD_INLINE ContactForce<Real> wall_force(const Law& law, const ParticleView<Real>& p, const Body& body, Index i,
+                                              const Geometry& g, const Pose<Real>* pose, typename Law::State& state, Real dt,
+                                              Vec3<Real>& v_point) {
+  const Vec3<Real> zero{0, 0, 0};
+  const Vec3<Real> wi = Features::rotation ? p.angular_velocity.get(i) : zero;
+  const Vec3<Real> vi = p.velocity.get(i);
+  const Vec3<Real> w_wall = pose ? pose->omega : zero;
+  const Real m_eff = Real(1) / p.inv_mass[i];
+  const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(vi, wi, x - body.x, pose ? pose->velocity_at(x) : zero, zero, zero); };
+  v_point = v_rel(g.point);
+  if constexpr (is_patch_geometry_v<Geometry>) {  // contact_patch.hpp
+    return contact_patch_force(law, g, v_rel, wi - w_wall, m_eff, state, dt);
+  } else {
+    ContactMotion<Real> m{v_point, wi - w_wall, m_eff};
+    if constexpr (Law::kRolling) m.inv_rolling_inertia = rolling_term(p, i, g.point - body.x);  // the wall: I_j infinite
+    return law.evaluate(g, m, state, dt);
   }
 }
 

@@ -63,12 +63,9 @@ struct WorldForces {
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - body.x;
       const Vec3<Real> zero{0, 0, 0};
-      const Vec3<Real> wi = Features::rotation ? p.angular_velocity.get(i) : zero;
-      const Vec3<Real> vi = p.velocity.get(i);
-      const Pose<Real>* pose = world.pose ? world.pose + w : nullptr;  // null: the object stands still
+      const Pose<Real>* pose = world.pose_of(w);  // null: the object stands still
       const Vec3<Real> w_wall = pose ? pose->omega : zero;
       const Law& law = laws(p.material[i], material);
-      const Real m_eff = Real(1) / p.inv_mass[i];
       int h = -1;  // the contact's slot (laws with history)
       (void)h, (void)key, (void)group;
       auto state = typename Law::State{};
@@ -78,19 +75,9 @@ struct WorldForces {
         if (h < 0) history.overflow[i] = 1;  // ran without its state: the store grows at the next rebuild
         else seen |= 1u << h;
       }
-      ContactForce<Real> c;
-      if constexpr (is_patch_geometry_v<std::decay_t<decltype(g)>>) {  // contact_patch.hpp
-        const auto v_rel = [&](const Vec3<Real>& x) {
-          return Kinematics::relative(vi, wi, x - body.x, pose ? pose->velocity_at(x) : zero, zero, zero);
-        };
-        c = contact_patch_force(law, g, v_rel, wi - w_wall, m_eff, state, dt);
-        if constexpr (Features::thesis_power) thesis += thesis_dissipation(law, static_cast<const ContactGeometry<Real>&>(g), c.force, v_rel(g.point), dt);
-      } else {
-        ContactMotion<Real> m{Kinematics::relative(vi, wi, ri, pose ? pose->velocity_at(g.point) : zero, zero, zero), wi - w_wall, m_eff};
-        if constexpr (Law::kRolling) m.inv_rolling_inertia = rolling_term(p, i, ri);  // the wall: I_j infinite
-        c = law.evaluate(g, m, state, dt);
-        if constexpr (Features::thesis_power) thesis += thesis_dissipation(law, g, c.force, m.v_rel, dt);
-      }
+      Vec3<Real> v_point;
+      const ContactForce<Real> c = wall_force<Kinematics, Features>(law, p, body, i, g, pose, state, dt, v_point);
+      if constexpr (Features::thesis_power) thesis += thesis_dissipation(law, static_cast<const ContactGeometry<Real>&>(g), c.force, v_point, dt);
       if constexpr (Law::kHistory)
         if (h >= 0) history.store(h, i, state);
       f += c.force;

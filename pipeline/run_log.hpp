@@ -12,6 +12,9 @@
 // made with `ledger`), five more columns follow: the energy taken out so far by particle-particle
 // contacts and by the contacts with each class of world object (blaze/particles/energy_ledger.hpp):
 //   dissipated_pair_J, dissipated_wall_J, dissipated_shell_J, dissipated_lifter_J, dissipated_end_plate_J
+// Then, for each reported world object (LoadColumns: `blaze run` reports every [[mesh]] and every
+// named [[wall]]), the load the particles put on it (Simulation::world_loads):
+//   load_<name>_Fx_N, _Fy_N, _Fz_N, _Tx_Nm, _Ty_Nm, _Tz_Nm   (torque about the origin)
 // Their sum is the energy method's dissipation, measured contact by contact; it differs from
 // dissipated_J (the balance's residual) by the elastic energy the contacts hold and the
 // integrator's error in the work (verification/test_energy_ledger.cpp).
@@ -39,6 +42,7 @@
 // Checkpoints keep E(0) and the scale (save(), resume()); the text names the energy's parts, and a
 // checkpoint whose E(0) left out the elastic energy is refused (its dissipated_J would jump).
 #pragma once
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -54,20 +58,32 @@ struct EnergyGain : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The world objects whose loads a log reports, and their names in the column headers.
+struct LoadColumns {
+  std::vector<std::string> names;
+  std::vector<int> objects;
+};
+
 template <class Real>
 class RunLog {
  public:
   // keep_until >= 0 (a restarted run): the existing file's rows up to that time stay.
   // `height`: the domain's extent along gravity (m), for the energy guard's scale.
   RunLog(const std::string& path, double penetration_limit, double energy_gain_limit, const Vec3<Real>& gravity,
-         double height, double keep_until = -1, bool ledger = false)
-      : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height), ledger_(ledger) {
+         double height, double keep_until = -1, bool ledger = false, LoadColumns loads = {})
+      : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height), ledger_(ledger),
+        loads_(std::move(loads)) {
     std::string kept = "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,elastic_J,total_J,"
                        "dissipated_J,contacts_vertex_face,contacts_edge_edge,contacts_wall,max_penetration_ratio,"
                        "penetration_over_limit,worst_penetration_id,drive_work_J";
     if (ledger_) {
       kept += ",dissipated_pair_J";
       for (int c = 0; c < kContactClasses; ++c) kept += std::string(",dissipated_") + contact_class_name(c) + "_J";
+    }
+    for (const auto& name : loads_.names) {
+      std::string n;
+      for (char ch : name) n += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+      for (const char* q : {"Fx_N", "Fy_N", "Fz_N", "Tx_Nm", "Ty_Nm", "Tz_Nm"}) kept += ",load_" + n + "_" + q;
     }
     kept += "\n";
     if (keep_until >= 0) {
@@ -146,6 +162,9 @@ class RunLog {
          << ',' << pen.over << ',' << pen.worst_id << ',' << work_;
     if (ledger_)
       for (double d : dissipated_) out_ << ',' << d;
+    if (!loads_.objects.empty())
+      for (const auto& l : sim.world_loads(loads_.objects))
+        out_ << ',' << l.force.x << ',' << l.force.y << ',' << l.force.z << ',' << l.torque.x << ',' << l.torque.y << ',' << l.torque.z;
     out_ << '\n';
     if (pen.over > 0 && warnings_++ < kMaxWarnings)
       std::printf("warning: t = %.6g s: %ld particles exceeded %.3g%% penetration since the last sample; deepest "
@@ -178,6 +197,7 @@ class RunLog {
   double e0_ = 0, scale_ = 0, worst_ = 0, max_gain_ = -1e300;
   double work_ = 0;  // J, W(t)
   bool ledger_;
+  LoadColumns loads_;
   double dissipated_[1 + kContactClasses] = {};  // J so far: pairs, then each world contact class
   static_assert(1 + kContactClasses == 5, "save() writes five accounts");
   bool started_ = false;

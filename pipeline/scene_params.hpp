@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include "blaze/scene/scene.hpp"
+#include "pipeline/run_log.hpp"
 #include "pipeline/simulation.hpp"
 
 namespace blaze {
@@ -21,6 +22,18 @@ SimulationParams<Real> simulation_params(const Scene& s, bool pairs_once = false
   p.world_lists = s.world_lists == WorldListsKind::on ? WorldLists::on : s.world_lists == WorldListsKind::off ? WorldLists::off
                                                                                                               : WorldLists::automatic;
   return p;
+}
+
+// The world objects whose loads the time series reports (run_log.hpp): every [[mesh]] and every
+// named [[wall]] (not the [mill]'s own parts), by their names.
+inline LoadColumns reported_loads(const Scene& s) {
+  LoadColumns c;
+  for (std::size_t k = 0; k < s.walls.size(); ++k)
+    if (!s.walls[k].name.empty() && s.walls[k].name.rfind("mill ", 0) != 0)
+      c.names.push_back(s.walls[k].name), c.objects.push_back(static_cast<int>(k));
+  for (std::size_t k = 0; k < s.meshes.size(); ++k)
+    c.names.push_back(s.meshes[k].name), c.objects.push_back(static_cast<int>(s.walls.size() + s.cylinders.size() + k));
+  return c;
 }
 
 }  // namespace blaze

@@ -26,6 +26,7 @@
 #include "kernels/integrate.hpp"
 #include "kernels/move_world.hpp"
 #include "kernels/world_forces.hpp"
+#include "kernels/world_loads.hpp"
 
 namespace blaze {
 
@@ -210,6 +211,24 @@ class Simulation {
   // count. A diagnostic for the time series: one kernel and one reduction, run only when asked
   // (never inside a step). Needs every law to have stored_energy().
   ContactEnergy contact_energy() { return stored_energy(tally(true, 0)); }
+  // The force (N) and torque about the origin (N m) the particles put on each of `objects` (world
+  // object indices) now, from the contacts as they stand (kernels/world_loads.hpp): a kernel and
+  // a reduction per 8 objects, run only when asked (never inside a step).
+  struct WorldLoad {
+    Vec3<double> force, torque;
+  };
+  std::vector<WorldLoad> world_loads(const std::vector<int>& objects) {
+    std::vector<WorldLoad> out;
+    for (std::size_t first = 0; first < objects.size(); first += kLoadObjects) {
+      WorldLoads<Shape, Law, Kinematics, Features> f{shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), params_.dt, {}, 0};
+      for (int k = 0; k < kLoadObjects; ++k) f.object[k] = -1;
+      for (std::size_t k = first; k < objects.size() && k < first + kLoadObjects; ++k) f.object[f.count++] = objects[k];
+      const LoadTally t = reduce_in_order(Space{}, store_.size(), f, load_parts_);
+      for (int k = 0; k < f.count; ++k)
+        out.push_back({{t.load[k][0], t.load[k][1], t.load[k][2]}, {t.load[k][3], t.load[k][4], t.load[k][5]}});
+    }
+    return out;
+  }
   // Deepest overlap / radius per particle since the last call, then reset (Features::monitor).
   PenetrationReport take_penetration(double threshold) {
     static_assert(Features::monitor, "penetration needs FeatureSet<..., ..., true>");
@@ -596,6 +615,7 @@ class Simulation {
   Buffer<double, Space> energy_pairs_, energy_walls_;  // contact_energy(), per particle
   Buffer<Index, Space> energy_wall_contacts_;
   Buffer<SampleTally, Space> tally_parts_;  // reduce_in_order's partial tallies
+  Buffer<LoadTally, Space> load_parts_;
   ParticleStore<Real, Space> kept_;         // keep_state()
   Buffer<Real, Space> slot_reals_[9];  // pairs once: force, contact point, patch moment (x, y, z each)
   Buffer<std::uint8_t, Space> slot_state_;

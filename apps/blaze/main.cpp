@@ -162,7 +162,7 @@ int run_scene(const Scene& s, const Options& o) {
   const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
   RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
-                   resume_at, sim.keeps_energy_ledger());
+                   resume_at, sim.keeps_energy_ledger(), reported_loads(s));
   // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
   // it is downloaded only if a guard stops the run.
   sim.keep_state();
