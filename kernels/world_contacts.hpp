@@ -8,34 +8,43 @@
 // hand-over between triangles, kernels/contact_history.hpp).
 #pragma once
 #include <type_traits>
+#include <utility>
+#include "blaze/contact/contact_patch.hpp"
 #include "blaze/world/world.hpp"
 
 namespace blaze {
 
-constexpr int kMeshContacts = 8;  // contacts one particle may have with one mesh (more: the deepest kept)
-template <class Real>
-using MeshGroup = MeshContacts<Real, kMeshContacts>;
+// The geometry a shape's wall contacts have (ContactGeometry, or a polyhedron's patch geometry),
+// and how many contacts of one particle with one mesh are kept (more: the deepest): 8 points, or
+// 4 patches (each holds up to 8 points).
+template <class Shape, class Body, class Real>
+using WallGeometry = std::decay_t<decltype(std::declval<const Shape&>().collide_world(std::declval<const Body&>(),
+                                                                                       std::declval<const PlanarPolygon<Real>&>()))>;
+template <class Geometry>
+constexpr int kMeshContacts = is_patch_geometry_v<Geometry> ? 4 : 8;
+template <class Geometry, class Real>
+using MeshGroup = MeshContacts<Real, kMeshContacts<Geometry>, Geometry>;
 
 template <class Shape, class Body, class Real, class F>
 BLAZE_HD void for_each_world_contact(const Shape& shape, const Body& body, const WorldView<Real>& world, Index i, F&& f) {
+  using Group = MeshGroup<WallGeometry<Shape, Body, Real>, Real>;
   world.visit(i, [&](const auto& object, int w) {
     if constexpr (std::is_same_v<std::decay_t<decltype(object)>, MeshObject<Real>>) {
-      MeshGroup<Real> group;
+      Group group;
       shape.collide_mesh(body, world.surface, object, world.pose_of(w), group);
       for (int k = 0; k < group.count; ++k)
         f(group.contact[k], static_cast<int>(object.material), w, static_cast<WallKey>(world.mesh_key_base + group.owner[k]), &group);
     } else {
-      f(shape.collide_world(body, object), static_cast<int>(object.material), w, static_cast<WallKey>(w),
-        static_cast<const MeshGroup<Real>*>(nullptr));
+      f(shape.collide_world(body, object), static_cast<int>(object.material), w, static_cast<WallKey>(w), static_cast<const Group*>(nullptr));
     }
   });
 }
 
 // The slot a mesh contact with key `key` takes (contact_history.hpp): its own, or the slot of a
-// triangle of the same mesh sharing a vertex with its triangle that no contact of the group
-// holds and no contact of this step has used, or a free one.
-template <class History, class Real>
-BLAZE_HD int mesh_contact_slot(const History& history, Index i, WallKey key, unsigned seen, const MeshGroup<Real>& group,
+// triangle of the same mesh that shares a vertex with its triangle or lies in its plane, that no
+// contact of the group holds and no contact of this step has used; or a free one.
+template <class History, class Group, class Real>
+BLAZE_HD int mesh_contact_slot(const History& history, Index i, WallKey key, unsigned seen, const Group& group,
                                const WorldView<Real>& world, int w) {
   const MeshObject<Real>& mesh = world.meshes[w - world.polygon_count - world.cylinder_count];
   const int t = key - world.mesh_key_base;
@@ -44,7 +53,7 @@ BLAZE_HD int mesh_contact_slot(const History& history, Index i, WallKey key, uns
     if (old < world.mesh_key_base || !mesh.owns(u)) return false;
     for (int k = 0; k < group.count; ++k)
       if (group.owner[k] == u) return false;
-    return share_vertex(world.surface.triangle, t, u);
+    return share_vertex(world.surface.triangle, t, u) || coplanar(world.surface, t, u);
   });
 }
 

@@ -57,7 +57,7 @@ struct WorldForces {
     if (p.ledger.on())
       for (int k = 0; k < kClassSumReals; ++k) p.ledger.class_sums[static_cast<std::size_t>(k) * p.ledger.n + i] = Real(0);
     // A contact with object w (world_contacts.hpp: key, and for a mesh the group of its contacts).
-    const auto apply = [&](const auto& g, int material, int w, WallKey key, const MeshGroup<Real>* group) {
+    const auto apply = [&](const auto& g, int material, int w, WallKey key, const auto* group) {
       if (!g.touching) return;
       if (!touched) f = p.force.get(i), touched = true;
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);

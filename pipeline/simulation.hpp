@@ -380,8 +380,6 @@ class Simulation {
   }
   void check_meshes(const World<Real>& world) const {
     if (world.meshes.empty()) return;
-    if (!shape_.mesh_walls_supported())
-      throw std::invalid_argument("mesh walls: polyhedra against triangle meshes are not supported yet (spheres are)");
     if (static_cast<double>(world.object_count()) + static_cast<double>(world.triangle_count()) > 2147483647.0)
       throw std::invalid_argument("mesh walls: more world objects and triangles than a contact key holds (2^31)");
   }

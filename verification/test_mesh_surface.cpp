@@ -28,11 +28,12 @@ namespace {
 struct Surface {
   TriangleMesh mesh;
   MeshTopology topo;
+  std::vector<Vec3<double>> normals;
   MeshSurfaceView<double> view() const {
     return {mesh.vertices.data(), mesh.triangles.data()->data(), topo.neighbour.data()->data(), topo.adjacency_start.data(),
-            topo.adjacency.data()};
+            topo.adjacency.data(), normals.data()};
   }
-  explicit Surface(TriangleMesh m) : mesh(std::move(m)), topo(mesh_topology(mesh)) {}
+  explicit Surface(TriangleMesh m) : mesh(std::move(m)), topo(mesh_topology(mesh)), normals(triangle_normals(mesh)) {}
 };
 
 struct Total {

@@ -12,7 +12,8 @@
 //   straight up (the contact normal is vertical there); one dropped off-centre into a valley
 //   (a crease) settles on its axis at the height two Hertz overlaps give.
 // - World lists on and off, and a checkpoint restart, change nothing (bitwise, Mindlin).
-// - Polyhedra against meshes are refused with a message (not built yet).
+// - Cubes slide and tumble over the tessellated plate as over the polygon (a vertex counts once
+//   per plane), and one settles in a valley on both faces at the height two overlaps give.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <random>
@@ -111,9 +112,9 @@ std::vector<std::size_t> rows(const ParticleState<Real>& s) {
 template <class Real>
 std::pair<double, double> parting(const ParticleState<Real>& a, const ParticleState<Real>& b, const ParticleState<Real>& start) {
   double worst = 0, travel = 0;
-  const auto ra = rows(a), rb = rows(b);
   BOOST_TEST_REQUIRE(a.size() == start.size());
   BOOST_TEST_REQUIRE(b.size() == start.size());
+  const auto ra = rows(a), rb = rows(b);
   for (std::size_t id = 0; id < start.size(); ++id) {
     const std::size_t i = ra[id], j = rb[id];
     const double t = norm(vec_cast<double>(a.position[i] - start.position[id]));
@@ -314,21 +315,94 @@ BOOST_AUTO_TEST_CASE(lists_and_restart_change_nothing_on_a_mesh) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(polyhedra_against_meshes_are_refused) {
-  std::istringstream text("vertices 4\n0 0 0\n0.01 0 0\n0 0.01 0\n0 0 0.01\nfaces 4\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+// Cubes on the tessellated plate and on the polygon: dropped turned at random while moving along
+// x, they land, tumble and slide across triangle edges and vertices; the history-free law and a
+// linear spring.
+template <class Law>
+void cubes_on_mesh_as_on_polygon(const Law& law, const std::string& name) {
+  std::istringstream text("vertices 8\n0 0 0\n0.02 0 0\n0.02 0.02 0\n0 0.02 0\n0 0 0.02\n0.02 0 0.02\n0.02 0.02 0.02\n"
+                          "0 0.02 0.02\nfaces 6\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
   PolyhedronShape<double> shape;
-  shape.table.add(parse_blaze_shape(text, "tetra"), 2500);
+  shape.table.add(parse_blaze_shape(text, "cube-20mm"), 2500);
   ParticleState<double> s;
-  add_polyhedron(s, shape.table, 0, Vec3<double>{0, 0, 0.05}, Quat<double>::identity(), 0, Vec3<double>{0, 0, 0});
-  using Law = LinearLaw<double>;
-  const Law law{LinearSpringDashpot<double>::from_restitution(1e5, 0.6), HistoryFreeFriction<double>::make(0.4, 20)};
-  const World<double> w = plate_world<double>(true, 0.5, 4);
-  try {
-    Simulation<DefaultSpace, PolyhedronShape<double>, Law, VelocityVerlet> sim(params<double>(1e-5, {0, 0, -9.81}, 0.6), one_law(law), w, s, shape);
-    BOOST_ERROR("a polyhedron run with a mesh wall started");
-  } catch (const std::invalid_argument& e) {
-    BOOST_TEST(std::string(e.what()).find("polyhedra against triangle meshes") != std::string::npos, e.what());
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 10; ++k) {  // dropped from just above the plate, turned at random, moving along x
+    const double a = 3 * u(rng);
+    const Vec3<double> axis = Vec3<double>{u(rng), u(rng), u(rng) + 1.5} * 1.0;
+    const Vec3<double> e = axis * (std::sin(a / 2) / norm(axis));
+    add_polyhedron(s, shape.table, 0, Vec3<double>{-0.3, -0.3 + 0.065 * k, 0.02 + 0.005 * (k % 3)}, Quat<double>{std::cos(a / 2), e.x, e.y, e.z}, 0,
+                   Vec3<double>{0.8 + 0.3 * u(rng), 0.05 * u(rng), 0});
   }
+  std::vector<ParticleState<double>> out;
+  const double dt = 1e-5;
+  for (bool as_mesh : {false, true}) {
+    Simulation<DefaultSpace, PolyhedronShape<double>, Law, VelocityVerlet> sim(params<double>(dt, {0, 0, -9.81}, 0.6, 2e-3), one_law(law),
+                                                                               plate_world<double>(as_mesh, 0.5, 20), s, shape);
+    sim.run(static_cast<std::uint64_t>(std::llround(0.3 / dt)));
+    out.push_back(sim.state());
+  }
+  const auto [worst, travel] = parting(out[1], out[0], s);
+  BOOST_TEST_MESSAGE("cubes on a mesh vs a polygon, " << name << ": " << worst << " of the travel (" << travel << " m)");
+  BOOST_TEST(travel > 0.1);
+  for (std::size_t k = 0; k < s.size(); ++k) BOOST_TEST(out[1].position[k].z > 0.009);  // on the plate, not through it
+  check_at_most({kCase, "cubes sliding and tumbling over 800 triangles vs one polygon, " + name + ": max |x_mesh - x_polygon| / travel",
+                 "-", "a vertex counts once per plane (polyhedron_shape.hpp collide_mesh)"},
+                worst, tol::mesh_walls_flat_trajectory);
+}
+
+BOOST_AUTO_TEST_CASE(polyhedra_on_a_mesh_move_as_on_one_polygon) {
+  const auto normal = LinearSpringDashpot<double>::from_restitution(1e5, 0.5);
+  cubes_on_mesh_as_on_polygon(LinearLaw<double>{normal, HistoryFreeFriction<double>::make(0.3, 20)}, "history-free");
+  cubes_on_mesh_as_on_polygon(LinearSpringLaw<double>{normal, TangentialSpring<double>::linear(0.3, 2.0 / 7.0 * 1e5, normal.beta)},
+                              "linear spring");
+}
+
+// A cube settling in a valley rests on both faces: two contacts, at the height two overlaps give.
+BOOST_AUTO_TEST_CASE(cube_in_a_valley_rests_on_both_faces) {
+  std::istringstream text("vertices 8\n0 0 0\n0.02 0 0\n0.02 0.02 0\n0 0.02 0\n0 0 0.02\n0.02 0 0.02\n0.02 0.02 0.02\n"
+                          "0 0.02 0.02\nfaces 6\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  PolyhedronShape<double> shape;
+  shape.table.add(parse_blaze_shape(text, "cube-20mm"), 2500);
+  const double s = 0.05, rise = s;  // faces at 45 degrees: the cube's edge sits in the crease
+  World<double> w;
+  w.meshes.push_back({"valley", mesh_of({{0, -s, 0}, {0, s, 0}, {s, -s, rise}, {s, s, rise}, {-s, -s, rise}, {-s, s, rise}},
+                                        {{0, 2, 3}, {0, 3, 1}, {0, 1, 5}, {0, 5, 4}}), 1});
+  // turned so that two face normals a, b of its (principal) body frame become the valley's
+  // u1 = (1, 0, 1) / sqrt 2 and y (then a x b becomes u1 x y = u2, the other face's): Q = u1 a^T +
+  // y b^T + u2 (a x b)^T, as a quaternion
+  const auto& d = shape.table.type[0];
+  const Vec3<double> a = d.normal[0];
+  Vec3<double> b = d.normal[1];
+  for (int f = 1; f < d.face_count; ++f)
+    if (std::fabs(dot(a, d.normal[f])) < 0.5) b = d.normal[f];
+  const Vec3<double> c3 = cross(a, b), u1{std::sqrt(0.5), 0, std::sqrt(0.5)}, y{0, 1, 0}, u2 = cross(u1, y);
+  double q[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z}, cv[3] = {c3.x, c3.y, c3.z};
+      const double t1[3] = {u1.x, u1.y, u1.z}, t2[3] = {y.x, y.y, y.z}, t3[3] = {u2.x, u2.y, u2.z};
+      q[i][j] = t1[i] * av[j] + t2[i] * bv[j] + t3[i] * cv[j];
+    }
+  const double qw = 0.5 * std::sqrt(std::fmax(0.0, 1 + q[0][0] + q[1][1] + q[2][2]));
+  const Quat<double> turn{qw, (q[2][1] - q[1][2]) / (4 * qw), (q[0][2] - q[2][0]) / (4 * qw), (q[1][0] - q[0][1]) / (4 * qw)};
+  ParticleState<double> p;
+  add_polyhedron(p, shape.table, 0, Vec3<double>{0.001, 0, 0.01 * std::sqrt(2.0) + 0.002}, turn, 0, Vec3<double>{0, 0, 0});
+  using Law = LinearLaw<double>;
+  auto normal = LinearSpringDashpot<double>::from_restitution(1e5, 0.2);
+  normal.no_tension = true;  // damped flat contacts want it (polyhedron_shape.hpp)
+  const Law law{normal, HistoryFreeFriction<double>::make(0.0, 0)};
+  Simulation<DefaultSpace, PolyhedronShape<double>, Law, VelocityVerlet, ContactPointVelocity, FullFeatures> sim(
+      params<double>(1e-5, {0, 0, -9.81}, 0.2, 1e-3), one_law(law), w, p, shape);
+  sim.run(100000);  // 1 s
+  const auto st = sim.state();
+  BOOST_TEST_REQUIRE(st.size() == 1u);
+  // each face carries m g / (2 cos 45); the linear spring: delta = N / k
+  const double m = 2500 * 8e-6, delta = m * 9.81 / (2 * std::cos(kPi / 4)) / 1e5;
+  const double z_rest = (0.01 - delta) * std::sqrt(2.0);  // the centre's height over the crease
+  BOOST_TEST_MESSAGE("cube in a valley: x " << st.position[0].x << ", z - z_rest " << st.position[0].z - z_rest << " (delta " << delta << ")");
+  check_at_most({kCase, "cube at rest in a mesh valley: |z - z_rest| / delta", "-", "two planes, two patch contacts"},
+                std::fabs(st.position[0].z - z_rest) / delta, tol::mesh_walls_valley_rest_cube);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

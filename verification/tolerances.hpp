@@ -522,13 +522,16 @@ constexpr double mesh_nearest_point = 1e-11;
 // A valley's face overlaps against r - y sin(60 deg): the distance to a plane through the
 // origin, exact to rounding (1e-16).
 constexpr double mesh_valley_overlap = 1e-12;
-// Spheres over a flat 800-triangle mesh against one polygon, double, 0.6 s (test_mesh_walls.cpp):
-// the mesh's face normals differ from the polygon's in the last bits, and bouncing contacts carry
-// that on; a moving mesh adds the round trip into its frame. Measured 2.6e-15 (still plate, also
-// along the grid lines: 0), 5.6e-11 (vibrating), 1.5e-14 (turning) (2026-12); the 1e-9.
+// Spheres (and cubes) over a flat 800-triangle mesh against one polygon, 0.6 s (0.3 s) of
+// bouncing, sliding, rolling and tumbling (test_mesh_walls.cpp): the triangles' normals are formed
+// in double (mesh_surface.hpp, triangle_normals), so the plate's is the polygon's exactly and the
+// runs agree bitwise (measured 0: spheres double and float, along the grid lines, cubes); a
+// moving mesh adds the round trip into its frame: 1.4e-17 (vibrating), 7.6e-15 (turning)
+// (2026-12). The 1e-9; a doubled edge contact gives 2e-4, a vertex counted per triangle
+// 2e-2.
 constexpr double mesh_walls_flat_trajectory = 1e-9;
-// The same in float: measured 1.1e-6 and 1.5e-6 (float's 6e-8 carried through the bounces);
-// 1e-4 is 60x that and still 200x below what a doubled edge contact gives (2e-4 in double).
+// The same in float: measured 0 (2026-12); 1e-4 allows float's rounding to part the runs and is
+// still below what a doubled contact gives.
 constexpr double mesh_walls_flat_trajectory_float = 1e-4;
 // The horizontal share of a sphere's rebound from a mesh vertex or ridge: measured 0 and 1.2e-15
 // (the vertex and edge normals x - p are vertical to rounding); a face's normal would tilt it by
@@ -537,6 +540,9 @@ constexpr double mesh_walls_feature_normal = 1e-9;
 // A sphere at rest in a mesh valley after 0.8 s of damped settling (e = 0.1): |x| / r measured
 // 2.9e-17 and the height's error / overlap 1.5e-10 (2026-12); 1e-6 leaves the settling's tail room.
 constexpr double mesh_walls_valley_rest = 1e-6;
+// A cube at rest in a mesh valley (45 degree faces): the height's error over the overlap, after
+// 1 s of damped settling (e = 0.2): measured 6.3e-7 (2026-12); 1e-4.
+constexpr double mesh_walls_valley_rest_cube = 1e-4;
 // The normal load 16 settled balls put on a mesh floor (world_loads) against their weight M g,
 // and its torque about the origin against sum x_i m_i g (over |M g| 0.1 m), after 0.2 s (e =
 // 0.3): measured 2.5e-9 (2026-12), what is left of their motion; 1e-6.

@@ -450,19 +450,77 @@ struct PolyhedronShape {
     return g;
   }
 
-  // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp): a sphere type's, merged per
-  // surface point. Polyhedra against meshes are not built yet: a Simulation with both refuses to
-  // start (mesh_walls_supported), so this never sees one.
-  bool mesh_walls_supported() const {
-    for (int t = 0; t < table.count; ++t)
-      if (table.type[t].vertex_count != 0) return false;
-    return true;
-  }
+  // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp). A sphere type: its bounding
+  // sphere's, merged per surface point. A polyhedron: as against a planar wall (vertices below the
+  // plane whose foot lies inside, the patch of the deepest and those within 1% of it), with the
+  // mesh's triangles grouped by plane: a vertex below a plane counts once for it however many of
+  // its triangles hold its foot (a tessellated floor pushes as one polygon), and each plane the
+  // body presses gives one contact (a valley: two). Like a planar wall, a mesh's edges and
+  // vertices pushing into a face of the body are not seen (vertex-face contacts only). In the
+  // mesh's frame (pose), turned back.
   template <int K>
   BLAZE_HD void collide_mesh(const Body& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,
-                             MeshContacts<Real, K>& out) const {
+                             MeshContacts<Real, K, Geometry>& out) const {
     const PolyhedronData<Real>& A = data(a.type);
-    if (A.vertex_count == 0) collide_sphere_mesh(a.x, A.bounding_radius, s, m, pose, out);
+    if (A.vertex_count == 0) {
+      MeshContacts<Real, K> points;
+      collide_sphere_mesh(a.x, A.bounding_radius, s, m, pose, points);
+      for (int k = 0; k < points.count; ++k) out.add(Geometry::of(points.contact[k]), points.owner[k], A.bounding_radius);
+      return;
+    }
+    const Vec3<Real> xr = pose ? pose->to_reference(a.x) : a.x;
+    const Mat3<Real> ra = pose ? pose->rotation.transpose_times(Mat3<Real>::rotation(a.q)) : Mat3<Real>::rotation(a.q);
+    const auto vertex = [&](int k) { return xr + ra * A.vertex[k]; };
+    int first = 0, last = 0;
+    m.bins.cell_of(xr, first, last);
+    struct Plane {
+      Vec3<Real> n;
+      Real offset;
+      std::uint32_t below;  // vertices below the plane with their foot in one of its triangles
+      int owner;            // the first such triangle
+    } plane[K];
+    int planes = 0;
+    const Real angle = sizeof(Real) == 4 ? Real(1e-4) : Real(1e-9);
+    for (int e = first; e < last; ++e) {
+      const int t = m.bins.entry[e];
+      const int* tri = s.triangle + 3 * t;
+      const Vec3<Real> v[3] = {s.vertex[tri[0]], s.vertex[tri[1]], s.vertex[tri[2]]};
+      const Vec3<Real> n = s.normal[t];
+      const Real offset = dot(n, v[0]);
+      const Real d_com = dot(xr, n) - offset;
+      if (!(d_com > Real(0) && d_com < A.bounding_radius)) continue;
+      const Real reach = sqrt_r(max_r(norm2(v[1] - v[0]), norm2(v[2] - v[0]))) + A.bounding_radius + sqrt_r(norm2(xr - v[0]));
+      const Real margin = Real(64) * epsilon_r<Real>() * reach * reach;
+      std::uint32_t below = 0;
+      for (int k = 0; k < A.vertex_count; ++k) {
+        const Vec3<Real> p = vertex(k);
+        if (!(offset - dot(n, p) > Real(0))) continue;
+        bool inside = true;
+        for (int j = 0; j < 3 && inside; ++j) inside = dot(p - v[j], cross(n, v[j + 1 < 3 ? j + 1 : 0] - v[j])) >= -margin;
+        if (inside) below |= 1u << k;
+      }
+      if (!below) continue;
+      int q = 0;
+      while (q < planes && !(norm2(plane[q].n - n) <= angle * angle && abs_r(plane[q].offset - offset) <= angle * reach)) ++q;
+      if (q < planes) plane[q].below |= below;
+      else if (planes < K) plane[planes++] = {n, offset, below, t};
+      else ++out.dropped;
+    }
+    for (int q = 0; q < planes; ++q) {
+      const Plane& pl = plane[q];
+      Geometry g;
+      Vec3<Real> point;
+      Real deepest;
+      const auto depth = [&](int k) { return (pl.below >> k) & 1u ? pl.offset - dot(pl.n, vertex(k)) : Real(0); };
+      if (!patch_of_depths(A, vertex, depth, point, deepest, g.patch)) continue;
+      Vec3<Real> n = -pl.n;
+      if (pose) {
+        n = pose->turn(n), point = pose->place(point);
+        for (int k = 0; k < g.patch.count && k < ContactPatch<Real>::kMaxPoints; ++k) g.patch.point[k] = pose->place(g.patch.point[k]);
+      }
+      static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+      out.add(g, pl.owner, A.bounding_radius);
+    }
   }
 
   // Rotation steps (see the header comment).
@@ -501,17 +559,24 @@ struct PolyhedronShape {
   BLAZE_HD static bool penetrating_vertices(const Body& a, const PolyhedronData<Real>& A, const Penetration& penetration,
                                             Vec3<Real>& point, Real& deepest, ContactPatch<Real>& patch) {
     const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
+    const auto vertex = [&](int k) { return a.x + ra * A.vertex[k]; };
+    return patch_of_depths(A, vertex, [&](int k) { return penetration(vertex(k)); }, point, deepest, patch);
+  }
+  // The same from vertex k's position vertex(k) and depth depth(k) (> 0: penetrating).
+  template <class Vertex, class Depth>
+  BLAZE_HD static bool patch_of_depths(const PolyhedronData<Real>& A, const Vertex& vertex, const Depth& depth, Vec3<Real>& point,
+                                       Real& deepest, ContactPatch<Real>& patch) {
     deepest = 0;
-    for (int k = 0; k < A.vertex_count; ++k) deepest = max_r(deepest, penetration(a.x + ra * A.vertex[k]));
+    for (int k = 0; k < A.vertex_count; ++k) deepest = max_r(deepest, depth(k));
     if (!(deepest > Real(0))) return false;
     const Real floor = Real(0.99) * deepest;
     Vec3<Real> sum{0, 0, 0};
     Real weight = 0;
     int count = 0;
     for (int k = 0; k < A.vertex_count; ++k) {
-      const Vec3<Real> v = a.x + ra * A.vertex[k];
-      const Real w = penetration(v) - floor;
+      const Real w = depth(k) - floor;
       if (w > Real(0)) {
+        const Vec3<Real> v = vertex(k);
         sum += v * w, weight += w;
         if (count < ContactPatch<Real>::kMaxPoints) patch.point[count] = v, patch.weight[count] = w;
         ++count;

@@ -45,7 +45,6 @@ struct SphereShape {
   BLAZE_HD ContactGeometry<Real> collide_world(const Body<Real>& a, const Object& w) const {
     return collide_sphere(a.x, a.r, w);
   }
-  BLAZE_HD bool mesh_walls_supported() const { return true; }
   // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp), merged per surface point.
   template <class Real, int K>
   BLAZE_HD void collide_mesh(const Body<Real>& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,

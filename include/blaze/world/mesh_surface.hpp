@@ -25,6 +25,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -70,6 +71,19 @@ inline MeshTopology mesh_topology(const TriangleMesh& m) {
   return t;
 }
 
+// Each triangle's unit normal, formed in double from the mesh's double vertices (kernels read it
+// rounded once: a flat mesh in an axis plane has exactly the axis as its normal, as a planar
+// polygon has; forming it per contact in float or from rounded vertices differed in the last bits).
+inline std::vector<Vec3<double>> triangle_normals(const TriangleMesh& m) {
+  std::vector<Vec3<double>> n(m.size());
+  for (std::size_t t = 0; t < m.size(); ++t) {
+    const Vec3<double> a = m.area_vector(t);
+    const double l = std::sqrt(norm2(a));  // divided, not multiplied by 1 / l: an axis normal comes out exact
+    n[t] = {a.x / l, a.y / l, a.z / l};
+  }
+  return n;
+}
+
 // What the contact kernels read (device-copyable pointers; the arrays are kept elsewhere;
 // std::array<int, 3> is stored as three ints, so its vectors' data() serve as the int arrays).
 template <class Real>
@@ -79,14 +93,10 @@ struct MeshSurfaceView {
   const int* neighbour;      // 3 per triangle (MeshTopology::neighbour's storage)
   const int* adjacency_start;
   const int* adjacency;
+  const Vec3<Real>* normal;  // per triangle, unit (triangle_normals)
 };
 
 namespace mesh_detail {
-template <class Real>
-BLAZE_HD Vec3<Real> unit_normal(const Vec3<Real>& a, const Vec3<Real>& b, const Vec3<Real>& c) {
-  const Vec3<Real> n = cross(b - a, c - a);
-  return n * (Real(1) / sqrt_r(norm2(n)));
-}
 // (x - a) . (n x (b - a)): >= 0 when x projects onto the inner side of edge a -> b of a
 // counter-clockwise triangle with unit normal n (m^2).
 template <class Real>
@@ -101,7 +111,7 @@ BLAZE_HD ContactGeometry<Real> collide_sphere_mesh_triangle(const Vec3<Real>& x,
   using mesh_detail::edge_side;
   const int* tri = m.triangle + 3 * t;
   const Vec3<Real> v[3] = {m.vertex[tri[0]], m.vertex[tri[1]], m.vertex[tri[2]]};
-  const Vec3<Real> n = mesh_detail::unit_normal(v[0], v[1], v[2]);
+  const Vec3<Real> n = m.normal[t];
   const Real d = dot(x - v[0], n);
   if (!(d < r && d > -r)) return ContactGeometry<Real>::none();
   // The rounding margin of the region tests (m^2): 64 ulps of the terms' size.
@@ -134,8 +144,7 @@ BLAZE_HD ContactGeometry<Real> collide_sphere_mesh_triangle(const Vec3<Real>& x,
     // x over the other face of the edge: that face offers the contact.
     const int o = m.neighbour[3 * t + edge];
     if (o >= 0) {
-      const int* ot = m.triangle + 3 * o;
-      const Vec3<Real> no = mesh_detail::unit_normal(m.vertex[ot[0]], m.vertex[ot[1]], m.vertex[ot[2]]);
+      const Vec3<Real> no = m.normal[o];
       const Vec3<Real> a = v[edge + 1 < 3 ? edge + 1 : 0], b = v[edge];  // the neighbour runs it b <- a
       if (edge_side(x, a, b, no) > margin) return ContactGeometry<Real>::none();
     }
@@ -153,15 +162,15 @@ BLAZE_HD ContactGeometry<Real> collide_sphere_mesh_triangle(const Vec3<Real>& x,
 // The offers one particle receives from the triangles of a mesh, merged: an offer at the same
 // point with the same normal as one kept (1e-9 of the radius, 1e-9 rad; float: 1e-4) is the same
 // contact, and the deeper of the two is kept. Holds up to K contacts; more are counted in
-// `dropped` (the deepest K kept).
-template <class Real, int K = 8>
+// `dropped` (the deepest K kept). Geometry: ContactGeometry, or a polyhedron's patch geometry.
+template <class Real, int K = 8, class Geometry = ContactGeometry<Real>>
 struct MeshContacts {
-  ContactGeometry<Real> contact[K];
+  Geometry contact[K];
   int owner[K];  // the triangle that offered the kept one
   int count = 0;
   int dropped = 0;
 
-  BLAZE_HD void add(const ContactGeometry<Real>& g, int triangle, Real r) {
+  BLAZE_HD void add(const Geometry& g, int triangle, Real r) {
     if (!g.touching) return;
     const Real same = (sizeof(Real) == 4 ? Real(1e-4) : Real(1e-9));
     for (int k = 0; k < count; ++k) {

@@ -47,6 +47,7 @@ struct MeshObject {
 template <class Real>
 struct MeshArrays {
   std::vector<Vec3<Real>> vertex;
+  std::vector<Vec3<Real>> normal;
   std::vector<int> triangle, neighbour, adjacency_start, adjacency, bin_start, bin_entry;
   std::vector<MeshObject<Real>> objects;
   std::vector<std::size_t> bin_start_offset, bin_entry_offset;
@@ -80,6 +81,7 @@ MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) 
     const int v0 = static_cast<int>(a.vertex.size()), t0 = static_cast<int>(a.triangle.size() / 3);
     const MeshTopology topo = mesh_topology(w.mesh);
     for (const auto& v : w.mesh.vertices) a.vertex.push_back(vec_cast<Real>(v));
+    for (const auto& n : triangle_normals(w.mesh)) a.normal.push_back(vec_cast<Real>(n));
     for (std::size_t t = 0; t < w.mesh.size(); ++t)
       for (int k = 0; k < 3; ++k) {
         a.triangle.push_back(v0 + w.mesh.triangles[t][static_cast<std::size_t>(k)]);
@@ -133,6 +135,17 @@ BLAZE_HD bool mesh_near(const Vec3<Real>& x, const MeshObject<Real>& m, const Po
   int first = 0, last = 0;
   m.bins.cell_of(pose ? pose->to_reference(x) : x, first, last);
   return last > first;
+}
+
+// Triangles a and b lie in one plane (normals within 1e-6 rad, planes within 1e-9 of a's size):
+// a contact moving from one to the other on a flat tessellation keeps its history.
+template <class Real>
+BLAZE_HD bool coplanar(const MeshSurfaceView<Real>& s, int a, int b) {
+  const int *ta = s.triangle + 3 * a, *tb = s.triangle + 3 * b;
+  const Vec3<Real> na = s.normal[a], nb = s.normal[b];
+  const Real size = sqrt_r(max_r(norm2(s.vertex[ta[1]] - s.vertex[ta[0]]), norm2(s.vertex[ta[2]] - s.vertex[ta[0]])));
+  const Real angle = sizeof(Real) == 4 ? Real(1e-4) : Real(1e-6), gap = sizeof(Real) == 4 ? Real(1e-5) : Real(1e-9);
+  return norm2(na - nb) <= angle * angle && abs_r(dot(s.vertex[tb[0]] - s.vertex[ta[0]], na)) <= gap * size;
 }
 
 // Triangles a and b share a vertex (a contact rolling from one to the other keeps its history).
