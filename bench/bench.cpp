@@ -225,6 +225,9 @@ int main(int argc, char** argv) {
     std::vector<long> sizes_t = {0L, 1000L, 10000L, 100000L};
     if (gpu) sizes_t.push_back(1000000L);
     for (long triangles : sizes_t) rows.push_back(mesh_box_case(n, triangles, 20, gpu ? 200 : 40));
+    // packed cubes on a floor of 1 polygon or a mesh of 1e3-1e5 triangles (issue 20's polyhedron row)
+    for (long triangles : {0L, 1000L, 10000L, 100000L})
+      rows.push_back(polyhedron_case("cube", PolyScene::packed, n, 20, 60, 1, false, triangles));
     print_rows(rows, first);
   }
   write_csv(file, earlier, rows, at);

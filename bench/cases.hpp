@@ -362,6 +362,30 @@ inline Row mesh_box_case(long n, long triangles, long warmup, long steps) {
   return row;
 }
 
+// The floor (the world's first polygon, a quadrilateral) replaced by a mesh of about `triangles`
+// triangles (an n x n grid of cell pairs) with its orientation (issue 20: polyhedra on a mesh).
+template <class Real>
+void mesh_floor(World<Real>& world, long triangles) {
+  const PlanarPolygon<Real> floor = world.polygons.front();
+  Vec3<double> c[4];
+  for (int k = 0; k < 4; ++k) c[k] = vec_cast<double>(floor.vertex[k]);
+  const int grid = std::max(1, static_cast<int>(std::lround(std::sqrt(0.5 * static_cast<double>(triangles)))));
+  TriangleMesh m;
+  for (int j = 0; j <= grid; ++j)
+    for (int i = 0; i <= grid; ++i) {
+      const double s = double(i) / grid, t = double(j) / grid;
+      m.vertices.push_back(c[0] + s * (c[1] - c[0]) + t * (c[3] - c[0]) + s * t * (c[2] - c[1] - c[3] + c[0]));
+    }
+  for (int j = 0; j < grid; ++j)
+    for (int i = 0; i < grid; ++i) {
+      const int p = j * (grid + 1) + i;
+      m.triangles.push_back({p, p + 1, p + grid + 2});
+      m.triangles.push_back({p, p + grid + 2, p + grid + 1});
+    }
+  world.polygons.erase(world.polygons.begin());
+  world.meshes.push_back({"floor", m, floor.material});
+}
+
 enum class PolyScene { free_fall, packed };
 
 // Polyhedra of one shape (about 1 cm), linear law (k = 1e5 N/m, e = 0.5), float, dt = t_c/25.
@@ -371,7 +395,7 @@ enum class PolyScene { free_fall, packed };
 // fit_memory: pairs from both sides whatever --pairs says (the largest runs: pair slots would
 // take ~1 KB per cube).
 inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long warmup, long steps, int floor_tiles = 1,
-                           bool fit_memory = false) {
+                           bool fit_memory = false, long floor_triangles = 0) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   PolyhedronShape<float> shape;
   const ConvexShape convex = load_shape(std::string("data/shapes/") + shape_name + ".shape");
@@ -380,16 +404,18 @@ inline Row polyhedron_case(const char* shape_name, PolyScene kind, long n, long 
   auto scene = kind == PolyScene::packed ? packed_polyhedra(shape.table, 0, static_cast<int>(n), 42, dt, drawn_orientation(convex))
                                          : polyhedron_packing(shape.table, 0, static_cast<int>(n), 42, dt);
   if (floor_tiles > 1) tile_floor(scene.world, floor_tiles);
+  if (floor_triangles > 0) mesh_floor(scene.world, floor_triangles);
   scene.params.skin = static_cast<float>(g_skin_fraction * shape.table.type[0].bounding_radius);
   scene.params.pairs = fit_memory ? PairEvaluation::both_sides : pairs_for(true);
   const Law law{LinearSpringDashpot<float>::from_restitution(k, 0.5), HistoryFreeFriction<float>::make(0.4, 0.05)};
   PairTable<Law> laws;
   laws.set(0, 0, law);
   laws.set(0, 1, law);
-  const int surfaces = static_cast<int>(scene.world.polygons.size() + scene.world.cylinders.size());
+  const int surfaces = static_cast<int>(scene.world.polygons.size() + scene.world.cylinders.size() + scene.world.triangle_count());
   Simulation<DefaultSpace, PolyhedronShape<float>, Law, VelocityVerlet, ContactPointVelocity, Stats> sim(
       scene.params, laws, scene.world, std::move(scene.particles), shape);
-  Row row = measure(sim, shape_name, "linear", "float", kind == PolyScene::packed ? "packed" : "free-fall", surfaces, warmup, steps);
+  const std::string scene_name = std::string(kind == PolyScene::packed ? "packed" : "free-fall") + (floor_triangles > 0 ? "-mesh-floor" : "");
+  Row row = measure(sim, shape_name, "linear", "float", scene_name.c_str(), surfaces, warmup, steps);
   if (sim.removed_count() != 0) std::printf("WARNING: %d bodies left the box\n", static_cast<int>(sim.removed_count()));
   return row;
 }

@@ -18,7 +18,8 @@
 
 namespace blaze {
 
-// automatic: lists from kWorldListsMinObjects objects on (below it a full pass is as cheap);
+// automatic: lists from kWorldListsMinObjects objects on (below it a full pass is as cheap), and
+// with any mesh (a particle far from it then skips even its bins' lookup, a random read);
 // on / off: always / never (tests compare the two).
 enum class WorldLists { automatic, on, off };
 constexpr int kWorldListsMinObjects = 8;
@@ -33,7 +34,7 @@ class WorldCandidates {
     if (mode == WorldLists::on && objects > 65535)
       throw std::invalid_argument("world lists: at most 65535 world objects, got " + std::to_string(objects));
     on_ = objects > 0 && objects <= 65535 &&
-          (mode == WorldLists::on || (mode == WorldLists::automatic && objects >= kWorldListsMinObjects));
+          (mode == WorldLists::on || (mode == WorldLists::automatic && (objects >= kWorldListsMinObjects || !world.meshes.empty())));
     skin_ = skin;
     double v = 0;
     for (int k = 0; k < objects; ++k) v = std::fmax(v, world.surface_speed(k));

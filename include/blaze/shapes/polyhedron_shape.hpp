@@ -470,7 +470,9 @@ struct PolyhedronShape {
     }
     const Vec3<Real> xr = pose ? pose->to_reference(a.x) : a.x;
     const Mat3<Real> ra = pose ? pose->rotation.transpose_times(Mat3<Real>::rotation(a.q)) : Mat3<Real>::rotation(a.q);
-    const auto vertex = [&](int k) { return xr + ra * A.vertex[k]; };
+    Vec3<Real> placed[kMaxVertices];  // the vertices in the mesh's frame, once (not per triangle)
+    for (int k = 0; k < A.vertex_count; ++k) placed[k] = xr + ra * A.vertex[k];
+    const auto vertex = [&](int k) { return placed[k]; };
     int first = 0, last = 0;
     m.bins.cell_of(xr, first, last);
     struct Plane {

@@ -54,15 +54,11 @@ struct MeshArrays {
   std::vector<long> longest_cell;  // per mesh: the most triangles one cell lists
 };
 
-// The bins' cell: the larger of the reach and the mean edge length (a cell then lists the
-// triangles within about two reaches of its points; mesh_bins.hpp).
-inline double mesh_cell_size(const TriangleMesh& m, double reach) {
-  double edges = 0;
-  for (std::size_t t = 0; t < m.size(); ++t)
-    for (int k = 0; k < 3; ++k) edges += norm(m.corner(t, (k + 1) % 3) - m.corner(t, k));
-  const double mean = m.size() ? edges / (3.0 * static_cast<double>(m.size())) : 0;
-  return std::fmax(std::fmax(reach, mean), 1e-6 * std::fmax(m.extent(), 1e-300));
-}
+// The bins' cell: the reach (a particle's cell then lists the triangles within about two reaches
+// of it, however large the triangles: cells as large as the mean edge listed ~14 per cell for
+// large triangles, and the dense bed's world phase took 2x the six polygons' at 1e3 triangles),
+// at least 1e-6 of the mesh's size; bin_mesh grows it to keep the grid within kMaxCells.
+inline double mesh_cell_size(const TriangleMesh& m, double reach) { return std::fmax(reach, 1e-6 * std::fmax(m.extent(), 1e-300)); }
 
 // `reach` (m): the largest bounding radius a particle has plus the neighbour-list skin (the world
 // lists test every mesh whose bins list triangles in the particle's cell; the contact finds every
