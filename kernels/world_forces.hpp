@@ -63,7 +63,7 @@ struct WorldForces {
       if constexpr (Features::monitor) deepest = max_r(deepest, g.overlap);
       const Vec3<Real> ri = g.point - body.x;
       const Vec3<Real> zero{0, 0, 0};
-      const Pose<Real>* pose = world.pose_of(w);  // null: the object stands still
+      const Pose<Real>* pose = world.pose_of(w);  // a still object: the identity
       const Vec3<Real> w_wall = pose ? pose->omega : zero;
       const Law& law = laws(p.material[i], material);
       int h = -1;  // the contact's slot (laws with history)

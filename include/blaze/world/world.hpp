@@ -149,7 +149,7 @@ struct WorldView {
   int mesh_count;
   MeshSurfaceView<Real> surface;  // every mesh's vertices, triangles, neighbours (mesh_wall.hpp)
   int mesh_key_base;              // a mesh contact's history key: mesh_key_base + its triangle
-  const Pose<Real>* pose;  // per object; null: a static world (every object still, none removed)
+  const Pose<Real>* pose;  // per object (a still world's: identities); null only without objects
   const ContactClass* object_class;  // per object; null: all plain walls (energy_ledger.hpp)
   // Per particle i, its world list: objects candidate[k * stride + i], k < candidate_count[i]
   // (kWorldCandidatesOverflow: every object); null: every object for every particle.
@@ -158,8 +158,8 @@ struct WorldView {
   Index candidate_stride = 0;
 
   BLAZE_HD ContactClass class_of(int w) const { return object_class ? object_class[w] : ContactClass::wall; }
-  BLAZE_HD bool active(int w) const { return !pose || pose[w].active; }
-  BLAZE_HD const Pose<Real>* pose_of(int w) const { return pose ? pose + w : nullptr; }
+  BLAZE_HD bool active(int w) const { return pose[w].active; }
+  BLAZE_HD const Pose<Real>* pose_of(int w) const { return pose + w; }
   // f(object, w) for each object present (not removed) that particle i may touch: its world list,
   // or every object; in object index order (polygons, cylinders, meshes) either way.
   template <class F>
@@ -220,6 +220,11 @@ class WorldStore {
     if (!dynamic_) {
       from_host(polygons_, w.polygons);
       from_host(cylinders_, w.cylinders);
+      // A still world has poses too, each the identity (x = x_ref, v = 0, exactly): the kernels
+      // never meet a null pose. With null poses guarded by `pose ? ... : ...`, nvcc 13 (sm_90) hoisted
+      // the load of pose->omega above the guard in the fused kernel of the 242-ball mill
+      // (cuda-gdb: LD [null + 0x30]), an illegal address depending on the build.
+      from_host(poses_, std::vector<Pose<Real>>(static_cast<std::size_t>(w.object_count()), pose_at<Real>(Motion{}, 0.0)));
       return;
     }
     const int n = w.object_count();
@@ -249,7 +254,7 @@ class WorldStore {
             {mesh_vertex_.data(), mesh_triangle_.data(), mesh_neighbour_.data(), mesh_adjacency_start_.data(), mesh_adjacency_.data(),
              mesh_normal_.data()},
             np + nc + nm,
-            dynamic_ ? poses_.data() : nullptr,
+            poses_.data(),
             classes_.size() ? classes_.data() : nullptr};
   }
   WorldMotionView<Real> motion_view() {
