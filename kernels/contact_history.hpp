@@ -153,15 +153,22 @@ struct RemapPairHistory {
     }
     return -1;
   }
+  // Particles inserted since the previous list (pipeline/feeder.hpp) sort from indices at or past
+  // its stride: they had no contacts.
   BLAZE_HD void operator()(Index i) const {
     const Index o = order[i];
     const Index count = min_r(list.count[i], list.capacity);
+    if (o >= previous.stride) {
+      for (Index k = 0; k < count; ++k) out[list.offset(k, i)] = Real(0);
+      return;
+    }
     Index from = 0;  // the cursor in i's own previous row
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       const Index was = order[j];
       Real v = 0;
-      if (!once) {
+      if (was >= previous.stride) {  // a new partner
+      } else if (!once) {
         const long e = find(o, was, from);
         if (e >= 0) v = in[e];
       } else if (i < j) {  // the owner now; it was the owner before iff o < was
@@ -186,7 +193,8 @@ struct GatherRows {
   T empty;
   BLAZE_HD void operator()(Index i) const {
     for (int h = 0; h < slots; ++h)
-      out[static_cast<std::size_t>(h) * n + i] = h < old_slots ? in[static_cast<std::size_t>(h) * stride + order[i]] : empty;
+      out[static_cast<std::size_t>(h) * n + i] =
+          h < old_slots && order[i] < stride ? in[static_cast<std::size_t>(h) * stride + order[i]] : empty;  // past stride: inserted
   }
 };
 

@@ -18,8 +18,12 @@
 // Their sum is the energy method's dissipation, measured contact by contact; it differs from
 // dissipated_J (the balance's residual) by the elastic energy the contacts hold and the
 // integrator's error in the work (verification/test_energy_ledger.cpp).
-// dissipated_J = E(0) + W(t) - E(t) - E_removed: what the dashpots, friction and drag took out,
-//   so that E(0) + W(t) = E(t) + dissipated_J + E_removed     (energy in = energy out + stored)
+// With feeders (the log made with `feeding`), two columns close the row: inserted, inserted_kg
+// (particles and mass inserted since the start).
+// dissipated_J = E(0) + W(t) + E_inserted - E(t) - E_removed: what the dashpots, friction and drag
+//   took out, so that E(0) + W(t) + E_inserted = E(t) + dissipated_J + E_removed (energy in =
+//   energy out + stored); E_inserted: the kinetic and potential energy particles inserted by
+//   feeders had when they were inserted (Simulation::inserted_energy)
 // holds in every row; an elastic, frictionless run keeps dissipated_J at zero up to the
 // integrator's O((omega dt)^2) wobble (verification/test_energy_balance.cpp). E_removed is the
 // kinetic and potential energy the removed particles had when they were removed
@@ -70,9 +74,9 @@ class RunLog {
   // keep_until >= 0 (a restarted run): the existing file's rows up to that time stay.
   // `height`: the domain's extent along gravity (m), for the energy guard's scale.
   RunLog(const std::string& path, double penetration_limit, double energy_gain_limit, const Vec3<Real>& gravity,
-         double height, double keep_until = -1, bool ledger = false, LoadColumns loads = {})
+         double height, double keep_until = -1, bool ledger = false, LoadColumns loads = {}, bool feeding = false)
       : path_(path), limit_(penetration_limit), gain_limit_(energy_gain_limit), gravity_(gravity), height_(height), ledger_(ledger),
-        loads_(std::move(loads)) {
+        loads_(std::move(loads)), feeding_(feeding) {
     std::string kept = "t_s,particles,removed,kinetic_translational_J,kinetic_rotational_J,potential_J,elastic_J,total_J,"
                        "dissipated_J,contacts_vertex_face,contacts_edge_edge,contacts_wall,max_penetration_ratio,"
                        "penetration_over_limit,worst_penetration_id,drive_work_J";
@@ -85,6 +89,7 @@ class RunLog {
       for (char ch : name) n += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
       for (const char* q : {"Fx_N", "Fy_N", "Fz_N", "Tx_Nm", "Ty_Nm", "Tz_Nm"}) kept += ",load_" + n + "_" + q;
     }
+    if (feeding_) kept += ",inserted,inserted_kg";
     kept += "\n";
     if (keep_until >= 0) {
       std::ifstream in(path);
@@ -138,12 +143,15 @@ class RunLog {
       e0_ = total, scale_ = e.translational + e.rotational + stored.total() + exchange, started_ = true;
     }
     const double removed_energy = sim.removed_energy();
+    // particles inserted since the start (feeders) brought their kinetic and potential energy
+    const double inserted_energy = sim.inserted_energy();
     work_ += smp.drive_work;
     dissipated_[0] += smp.dissipated_pair;
     for (int c = 0; c < kContactClasses; ++c) dissipated_[1 + c] += smp.dissipated_walls[c];
-    const double gain = total + removed_energy - work_ - e0_;
-    // the balance's error grows with the energy that went through it: moving walls add |W|
-    const double scale = scale_ + std::abs(work_);
+    const double gain = total + removed_energy - work_ - inserted_energy - e0_;
+    // the balance's error grows with the energy that went through it: moving walls add |W|,
+    // inserted particles their kinetic energy and what they can exchange with gravity
+    const double scale = scale_ + std::abs(work_) + sim.inserted_kinetic() + sim.inserted_mass() * static_cast<double>(norm(gravity_)) * height_;
     if (scale > 0 && gain > gain_limit_ * scale) {
       char msg[360];
       std::snprintf(msg, sizeof msg, "t = %.6g s (step %llu): the energy rose %.3g J above its initial value plus the "
@@ -158,13 +166,14 @@ class RunLog {
     const PenetrationReport& pen = smp.penetration;
     out_ << sim.time() << ',' << sim.size() << ',' << sim.removed_count() << ',' << e.translational << ','
          << e.rotational << ',' << e.potential << ',' << stored.total() << ',' << total << ','
-         << e0_ + work_ - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
+         << e0_ + work_ + inserted_energy - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
          << ',' << pen.over << ',' << pen.worst_id << ',' << work_;
     if (ledger_)
       for (double d : dissipated_) out_ << ',' << d;
     if (!loads_.objects.empty())
       for (const auto& l : sim.world_loads(loads_.objects))
         out_ << ',' << l.force.x << ',' << l.force.y << ',' << l.force.z << ',' << l.torque.x << ',' << l.torque.y << ',' << l.torque.z;
+    if (feeding_) out_ << ',' << sim.inserted_count() << ',' << sim.inserted_mass();
     out_ << '\n';
     if (pen.over > 0 && warnings_++ < kMaxWarnings)
       std::printf("warning: t = %.6g s: %ld particles exceeded %.3g%% penetration since the last sample; deepest "
@@ -198,6 +207,7 @@ class RunLog {
   double work_ = 0;  // J, W(t)
   bool ledger_;
   LoadColumns loads_;
+  bool feeding_;
   double dissipated_[1 + kContactClasses] = {};  // J so far: pairs, then each world contact class
   static_assert(1 + kContactClasses == 5, "save() writes five accounts");
   bool started_ = false;

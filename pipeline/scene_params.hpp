@@ -21,6 +21,8 @@ SimulationParams<Real> simulation_params(const Scene& s, bool pairs_once = false
                            pairs_once ? PairEvaluation::once : PairEvaluation::both_sides, s.output.energy_by_class};
   p.world_lists = s.world_lists == WorldListsKind::on ? WorldLists::on : s.world_lists == WorldListsKind::off ? WorldLists::off
                                                                                                               : WorldLists::automatic;
+  // every type's size, the feeds' derived extremes among them: the grid holds what they insert
+  p.max_radius = static_cast<Real>(r_max);
   return p;
 }
 

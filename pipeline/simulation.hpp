@@ -53,6 +53,10 @@ struct SimulationParams {
   bool energy_ledger = false;
   // Per-particle lists of the world objects in reach (pipeline/world_candidates.hpp).
   WorldLists world_lists = WorldLists::automatic;
+  // m, the largest bounding radius the run will ever hold: particles inserted later (feeders,
+  // pipeline/feeder.hpp) may be larger than the first ones, and the grid's cell is sized for it.
+  // 0: the initial particles' largest (a run that starts empty must give it).
+  Real max_radius = 0;
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
@@ -108,7 +112,8 @@ class Simulation {
 
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const ParticleState<Real>& particles, const Shape& shape = Shape{})
-      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(particles.radius)), params.skin) {
+      : shape_(shape), params_(params), laws_(laws), r_max_(std::max(params.max_radius, max_of(particles.radius))),
+        broad_(make_grid(params, r_max_), params.skin) {
     check_params(params);
     check_materials(laws, world, particles);
     reside_shape();
@@ -116,9 +121,10 @@ class Simulation {
     store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic() || params.energy_ledger,
                   Features::thesis_power);  // checks the lengths
     check_finite(particles, 0);
-    world_.upload(world, 0, static_cast<double>(params.dt), mesh_reach(params, max_of(particles.radius)));
+    world_.upload(world, 0, static_cast<double>(params.dt), mesh_reach(params, r_max_));
     lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
     initial_count_ = store_.size();
+    for (Index id : particles.id) next_id_ = std::max(next_id_, id + 1);
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     configure_contacts(world);
     first_build();
@@ -134,7 +140,9 @@ class Simulation {
   // priming, so the next step is bit for bit the step the original run took.
   Simulation(const SimulationParams<Real>& params, const PairTable<Law>& laws, const World<Real>& world,
              const SimulationSnapshot<Real>& snap, const Shape& shape = Shape{})
-      : shape_(shape), params_(params), laws_(laws), broad_(make_grid(params, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField))), params.skin) {
+      : shape_(shape), params_(params), laws_(laws),
+        r_max_(std::max(params.max_radius, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField)))),
+        broad_(make_grid(params, r_max_), params.skin) {
     check_params(params);
     ParticleState<Real> materials_only;
     materials_only.material = snap.store.material;
@@ -142,14 +150,20 @@ class Simulation {
     reside_shape();
     check_meshes(world);
     store_.restore(snap.store);
+    store_.keep_fields(Integrator::keeps_previous_forces, Features::monitor);
     steps_ = snap.steps;
-    world_.upload(world, steps_, static_cast<double>(params.dt), mesh_reach(params, max_of(snap.store.reals.at(StoreSnapshot<Real>::kRadiusField))));
+    world_.upload(world, steps_, static_cast<double>(params.dt), mesh_reach(params, r_max_));
     lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
     if (world.dynamic() || params.energy_ledger) store_.keep_ledger(Features::thesis_power);
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;
     removed_mass_ = snap.removed_mass;
     removed_energy_ = snap.removed_energy;
+    inserted_count_ = snap.inserted_count;
+    inserted_mass_ = snap.inserted_mass;
+    inserted_energy_ = snap.inserted_energy;
+    inserted_kinetic_ = snap.inserted_kinetic;
+    next_id_ = snap.next_id;
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
     configure_contacts(world);
     first_build();
@@ -169,6 +183,11 @@ class Simulation {
     out.removed_count = removed_count_;
     out.removed_mass = removed_mass_;
     out.removed_energy = removed_energy_;
+    out.inserted_count = inserted_count_;
+    out.inserted_mass = inserted_mass_;
+    out.inserted_energy = inserted_energy_;
+    out.inserted_kinetic = inserted_kinetic_;
+    out.next_id = next_id_;
     return out;
   }
 
@@ -296,6 +315,57 @@ class Simulation {
   Index size() const { return store_.size(); }
   Index initial_count() const { return initial_count_; }
   Index removed_count() const { return removed_count_; }
+  // Particles inserted after the start (insert()), their mass (kg) and their energy when inserted
+  // (J: kinetic, translational and rotational, plus potential in the gravity of the moment).
+  Index inserted_count() const { return inserted_count_; }
+  double inserted_mass() const { return inserted_mass_; }
+  double inserted_energy() const { return inserted_energy_; }
+  double inserted_kinetic() const { return inserted_kinetic_; }  // J, their kinetic energy alone
+  // The largest bounding radius the grid was made for (SimulationParams::max_radius).
+  Real max_radius() const { return r_max_; }
+
+  // Adds particles between steps (a feeder's, pipeline/feeder.hpp): they take the next permanent
+  // ids, start with no contacts and no force, and the neighbour list is rebuilt at once (sorted
+  // in, contact states carried over; the run's trajectory does not depend on where in memory they
+  // landed). The caller placed them where they overlap nothing. Refused: a bounding radius above
+  // max_radius(), a material without laws, a state that is not finite.
+  void insert(ParticleState<Real> add) {
+    if (add.size() == 0) return;
+    check_materials(laws_, World<Real>{}, add);
+    check_finite(add, steps_);
+    for (std::size_t k = 0; k < add.size(); ++k) {
+      if (!(add.radius[k] > 0 && add.radius[k] <= r_max_))
+        throw std::invalid_argument("simulation: an inserted particle's radius " + std::to_string(add.radius[k]) +
+                                    " m is outside (0, max_radius = " + std::to_string(r_max_) + " m] (SimulationParams::max_radius)");
+      add.id[k] = next_id_++;
+      const double m = static_cast<double>(add.mass[k]);
+      const Vec3<double> x = vec_cast<double>(add.position[k]), v = vec_cast<double>(add.velocity[k]);
+      const Vec3<double> w = vec_cast<double>(add.angular_velocity[k]);
+      const double kinetic = 0.5 * m * dot(v, v) + 0.5 * static_cast<double>(add.inertia[k].x) * dot(w, w);
+      inserted_mass_ += m;
+      inserted_kinetic_ += kinetic;
+      inserted_energy_ += kinetic - m * dot(vec_cast<double>(params_.gravity), x);
+    }
+    inserted_count_ += static_cast<Index>(add.size());
+    store_.append(add);
+    rebuild(true);
+  }
+  // Centres and bounding radii of the particles whose centre lies in [lo, hi] (m): what a feeder
+  // must keep clear of. Downloads the positions and radii (16 or 32 B per particle).
+  void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre,
+                        std::vector<double>& radius) const {
+    centre.clear(), radius.clear();
+    const ParticleView<Real> p = const_cast<ParticleStore<Real, Space>&>(store_).view();
+    const std::size_t n = static_cast<std::size_t>(p.n);
+    std::vector<Real> x(n), y(n), z(n), r(n);
+    copy_n(p.position.x, n, x.data(), Space{}, Host{});
+    copy_n(p.position.y, n, y.data(), Space{}, Host{});
+    copy_n(p.position.z, n, z.data(), Space{}, Host{});
+    copy_n(p.radius, n, r.data(), Space{}, Host{});
+    for (std::size_t k = 0; k < n; ++k)
+      if (x[k] >= lo.x && x[k] <= hi.x && y[k] >= lo.y && y[k] <= hi.y && z[k] >= lo.z && z[k] <= hi.z)
+        centre.push_back({x[k], y[k], z[k]}), radius.push_back(r[k]);
+  }
   double removed_mass() const { return removed_mass_; }
   // Translational kinetic + potential energy the removed particles had when they were removed, J.
   double removed_energy() const { return removed_energy_; }
@@ -354,7 +424,7 @@ class Simulation {
     if (!(params.drag >= 0)) throw std::invalid_argument("simulation: drag must be >= 0 kg/m");
   }
   static GridSpec<Real> make_grid(const SimulationParams<Real>& prm, Real r_max) {
-    if (!(r_max > 0)) throw std::invalid_argument("simulation: no particles");
+    if (!(r_max > 0)) throw std::invalid_argument("simulation: no particles and no max_radius (a run that starts empty sizes its grid by SimulationParams::max_radius)");
     return GridSpec<Real>::make(prm.domain_lo, prm.domain_hi, Real(2) * r_max + prm.skin);
   }
 
@@ -609,6 +679,7 @@ class Simulation {
   Buffer<typename ResidentTable<Shape>::type, Space> resident_;  // the shape's table where its kernels read it
   SimulationParams<Real> params_;
   PairTable<Law> laws_;
+  Real r_max_;  // the grid's largest bounding radius (SimulationParams::max_radius)
   Buffer<Index, Space> stats_vertex_face_, stats_edge_edge_;
   Buffer<double, Space> energy_pairs_, energy_walls_;  // contact_energy(), per particle
   Buffer<Index, Space> energy_wall_contacts_;
@@ -629,6 +700,8 @@ class Simulation {
   Index initial_count_ = 0;
   Index removed_count_ = 0;
   double removed_mass_ = 0, removed_energy_ = 0;
+  Index inserted_count_ = 0, next_id_ = 0;
+  double inserted_mass_ = 0, inserted_energy_ = 0, inserted_kinetic_ = 0;
   std::uint64_t steps_ = 0;
 };
 

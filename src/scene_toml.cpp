@@ -190,6 +190,23 @@ class Fields {
     return out;
   }
 
+  // A list of min_size to max_size numbers, each in r.
+  std::vector<double> numbers(const std::string& key, const Range& r, std::size_t min_size, std::size_t max_size) {
+    const toml::node* n = get(key);
+    const std::string allowed = "a list of " + std::to_string(min_size) + " to " + std::to_string(max_size) + " numbers, each " + r.text();
+    if (!n) missing(key, allowed);
+    const toml::array* a = n->as_array();
+    if (!a || a->size() < min_size || a->size() > max_size) fail(*n, key, allowed);
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      if (!e.is_number()) fail(*n, key, allowed);
+      const double v = e.is_floating_point() ? e.as_floating_point()->get() : static_cast<double>(e.as_integer()->get());
+      if (!r.contains(v)) fail(*n, key, allowed);
+      out.push_back(v);
+    }
+    return out;
+  }
+  const toml::table& table() const { return t_; }
   const std::string& label() const { return label_; }
   const std::string& file() const { return file_; }
   // "file:line" of a key (of the table when the key is absent: its default was taken).
@@ -665,6 +682,131 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
   return total;
 }
 
+// A [[feed]]'s `region` and `size` tables, and the feed (scene.hpp's FeedSpec). A sphere feed with
+// a size distribution adds two derived particle types, its smallest and largest particle, so that
+// the critical step, the impact overlap, the grid and the overlap checks see them.
+InsertionRegion read_region(Fields& feed, const std::string& file, const Scene& s, double r) {
+  const toml::node* n = feed.get("region");
+  const std::string allowed = "a table: region = { kind = \"box\", lo = [..], hi = [..] }, { kind = \"cylinder\", centre, axis, radius, "
+                              "length } or { kind = \"disc\", centre, normal, radius }";
+  if (!n) feed.missing("region", allowed);
+  if (!n->is_table()) feed.fail(*n, "region", allowed);
+  InsertionRegion g;
+  Fields f(*n->as_table(), feed.label() + " region", file, {"kind", "lo", "hi", "centre", "axis", "normal", "radius", "length"});
+  if (!f.has("kind")) f.missing("kind", "one of \"box\", \"cylinder\", \"disc\"");
+  g.kind = static_cast<RegionKind>(f.choice("kind", {"box", "cylinder", "disc"}, 0));
+  const std::vector<std::vector<std::string>> used = {{"lo", "hi"}, {"centre", "axis", "radius", "length"}, {"centre", "normal", "radius"}};
+  for (const std::string key : {"lo", "hi", "centre", "axis", "normal", "radius", "length"}) {
+    const auto& mine = used[static_cast<std::size_t>(g.kind)];
+    if (f.has(key) && std::find(mine.begin(), mine.end(), key) == mine.end())
+      f.fail(*f.get(key), key, std::string("not a key of kind = \"") + to_string(g.kind) + "\"");
+  }
+  if (g.kind == RegionKind::box) {
+    g.lo = f.vec3("lo", position("m"));
+    g.hi = f.vec3("hi", position("m"));
+    const Vec3<double> span = g.hi - g.lo;
+    if (!(span.x >= 2 * r && span.y >= 2 * r && span.z >= 2 * r))
+      f.fail(*f.get("hi"), "hi", "the box must exceed lo by at least the largest particle's diameter (" + Scene::shortest(2 * r) + " m) in x, y and z");
+  } else {
+    g.centre = f.vec3("centre", position("m"));
+    const char* key = g.kind == RegionKind::disc ? "normal" : "axis";
+    const Vec3<double> a = f.vec3(key, {-1e9, 1e9, false, false, "(a direction)"});
+    if (!(norm(a) > 0)) f.fail(*f.get(key), key, "a non-zero direction");
+    g.axis = a * (1 / norm(a));
+    g.radius = f.number("radius", {r, kMaxCoordinate, false, false, "m (at least the largest particle's radius)"});
+    if (g.kind == RegionKind::cylinder) g.length = f.number("length", {2 * r, kMaxCoordinate, false, false, "m (at least the largest particle's diameter)"});
+  }
+  Vec3<double> lo, hi;
+  g.bounds(lo, hi);
+  if (!inside_domain(s, lo, 0) || !inside_domain(s, hi, 0)) feed.fail(*n, "region", "the region must lie inside the domain");
+  return g;
+}
+
+SizeDistribution read_size(Fields& feed, const std::string& file, double type_radius) {
+  SizeDistribution d;
+  d.radius = type_radius;
+  const toml::node* n = feed.get("size");
+  if (!n) return d;
+  const std::string allowed = "a table: size = { kind = \"classes\" | \"uniform\" | \"normal\" | \"lognormal\" | \"rosin_rammler\", ... }";
+  if (!n->is_table()) feed.fail(*n, "size", allowed);
+  Fields f(*n->as_table(), feed.label() + " size", file, {"kind", "by", "radii", "fractions", "min", "max", "mean", "deviation", "median", "sigma", "r63", "k"});
+  if (!f.has("kind")) f.missing("kind", "one of \"classes\", \"uniform\", \"normal\", \"lognormal\", \"rosin_rammler\"");
+  d.kind = static_cast<SizeKind>(1 + f.choice("kind", {"classes", "uniform", "normal", "lognormal", "rosin_rammler"}, 0));
+  d.by_mass = f.choice("by", {"number", "mass"}, 0) == 1;
+  const std::vector<std::vector<std::string>> used = {{}, {"radii", "fractions"}, {"min", "max"}, {"mean", "deviation", "min", "max"},
+                                                      {"median", "sigma", "min", "max"}, {"r63", "k", "min", "max"}};
+  for (const std::string key : {"radii", "fractions", "min", "max", "mean", "deviation", "median", "sigma", "r63", "k"}) {
+    const auto& mine = used[static_cast<std::size_t>(d.kind)];
+    if (f.has(key) && std::find(mine.begin(), mine.end(), key) == mine.end())
+      f.fail(*f.get(key), key, std::string("not a key of kind = \"") + to_string(d.kind) + "\"");
+  }
+  const Range size{0, kMaxSize, true, false, "m"};
+  if (d.kind == SizeKind::classes) {
+    d.sizes = f.numbers("radii", size, 1, 64);
+    d.fractions = f.numbers("fractions", {0, 1, false, false, ""}, d.sizes.size(), d.sizes.size());
+  } else {
+    d.min = f.number("min", size);
+    d.max = f.number("max", size);
+    if (d.kind == SizeKind::normal) d.mean = f.number("mean", size), d.deviation = f.number("deviation", size);
+    if (d.kind == SizeKind::lognormal) d.mean = f.number("median", size), d.deviation = f.number("sigma", {0, 10, true, false, "(of ln r)"});
+    if (d.kind == SizeKind::rosin_rammler) d.scale = f.number("r63", size), d.shape = f.number("k", {0, 100, true, false, ""});
+  }
+  try {
+    d.validate();
+  } catch (const std::exception& e) {
+    feed.fail(*n, "size", e.what());
+  }
+  return d;
+}
+
+void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
+  const auto types = type_names(s);
+  const auto items = tables(root, "feed", file);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Fields f(*items[k], item_label("feed", k), file,
+             {"name", "type", "region", "start_time", "end_time", "rate", "mass_rate", "count", "velocity", "velocity_spread",
+              "random_orientation", "interval", "size", "seed"});
+    FeedSpec d;
+    d.name = f.string_or("name", item_label("feed", k), "a non-empty name");
+    d.type = lookup(f, "type", types, "particle_type");
+    const ParticleTypeSpec t = s.types[static_cast<std::size_t>(d.type)];
+    if (f.has("size") && !s.all_spheres())
+      f.fail(*f.get("size"), "size", "size distributions are for scenes of spheres only; with polyhedra each type has one size "
+             "(give one [[feed]] per [[particle_type]] for several sizes)");
+    d.size = read_size(f, file, t.size());
+    const double r = d.size.largest();
+    d.region = read_region(f, file, s, r);
+    d.start = f.number_or("start_time", 0, non_negative("s"));
+    d.end = f.number_or("end_time", s.end_time, {d.start, kInf, true, false, "s (after start_time)"});
+    if (f.has("rate") == f.has("mass_rate"))
+      f.missing("rate", "exactly one of rate (particles/s) and mass_rate (kg/s)");
+    d.rate = f.number_or("rate", 0, {0, 1e12, true, false, "particles/s"});
+    d.mass_rate = f.number_or("mass_rate", 0, {0, 1e12, true, false, "kg/s"});
+    d.count = f.integer_or("count", 0, 0, kMaxParticles);
+    d.velocity = f.vec3_or("velocity", {0, 0, 0}, speed());
+    d.spread = f.number_or("velocity_spread", 0, {0, kMaxSpeed, false, false, "m/s"});
+    d.random_orientation = f.boolean_or("random_orientation", true);
+    // Default interval: the time the largest particle takes to move two diameters from rest at the
+    // feed's speed under gravity (|v| t + |g| t^2 / 2 = 4 r): the batch before has left its place.
+    const double v = norm(d.velocity) + d.spread, g = norm(s.gravity);
+    const double clear = g > 0 ? (-v + std::sqrt(v * v + 8 * g * r)) / g : v > 0 ? 4 * r / v : 0;
+    if (!f.has("interval") && !(clear > 0))
+      f.missing("interval", "without gravity or a velocity the particles do not leave the region: give the time between insertions");
+    d.interval = f.number_or("interval", clear, {0, kInf, true, false, "s (rounded up to whole steps)"});
+    d.seed = static_cast<std::uint64_t>(f.integer_or("seed", static_cast<long>((s.seed + 7919 * (k + 1)) & 0x7fffffff), 0, 2147483647));
+    f.note(s, "feed[" + std::to_string(k) + "].", {"rate", "mass_rate", "count", "interval", "size", "region"});
+    if (d.size.kind != SizeKind::constant)  // the extremes as derived types (see above)
+      for (const double radius : {d.size.smallest(), d.size.largest()}) {
+        ParticleTypeSpec e = t;
+        e.name = t.name + " (" + d.name + (radius == d.size.smallest() ? " smallest)" : " largest)");
+        e.radius = radius;
+        e.volume = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
+        s.types.push_back(e);
+      }
+    s.feeds.push_back(d);
+  }
+}
+
 // An object's `motion` table (blaze/world/motion.hpp) and its `remove_time`.
 // `label`: the object's, for messages ("[[wall]] #2"); `prefix`: its place, for where() ("wall[1]").
 Motion read_motion(Fields& object, const std::string& file, const std::string& label, const std::string& prefix, Scene& s) {
@@ -1117,7 +1259,7 @@ void check_resolution(Scene& s) {
 Scene read(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(root, o);
   static const std::set<std::string> known = {"simulation", "output", "material", "pair", "particle_type",
-                                              "lattice", "particles", "fill", "wall", "cylinder", "mesh", "mill", "study"};
+                                              "lattice", "particles", "fill", "feed", "wall", "cylinder", "mesh", "mill", "study"};
   for (const auto& [k, v] : root)
     if (!known.count(std::string(k.str()))) {
       std::string allowed;
@@ -1135,7 +1277,8 @@ Scene read(toml::table& root, const std::string& file, const std::vector<std::st
   read_pairs(root, file, s);
   read_types(root, file, s);
   const long total = read_placements(root, file, s);
-  if (total == 0) throw SceneError(file + ": no particles: add a [[lattice]], [[particles]] or [[fill]]");
+  read_feeds(root, file, s);
+  if (total == 0 && s.feeds.empty()) throw SceneError(file + ": no particles: add a [[lattice]], [[particles]], [[fill]] or [[feed]]");
   if (total > kMaxParticles) throw SceneError(file + ": " + std::to_string(total) + " particles; at most 2^31 - 1");
   read_world(root, file, s);
   read_meshes(root, file, s);

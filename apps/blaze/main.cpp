@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -23,6 +24,7 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_identity.hpp"
+#include "pipeline/feeder.hpp"
 #include "pipeline/run_log.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "pipeline/scene_params.hpp"
@@ -123,6 +125,41 @@ class Progress {
   clock::time_point start_, last_;
 };
 
+// The feeders' states as one byte string for the checkpoint (u64 count, then u64 length + bytes
+// each), and back.
+template <class Real>
+std::string save_feeders(const std::vector<Feeder<Real>>& feeders) {
+  std::string out;
+  auto put = [&](std::uint64_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  put(feeders.size());
+  for (const auto& f : feeders) {
+    const std::string b = f.save();
+    put(b.size());
+    out += b;
+  }
+  return out;
+}
+template <class Real>
+void restore_feeders(std::vector<Feeder<Real>>& feeders, const std::string& bytes, const std::string& path) {
+  std::size_t at = 0;
+  auto get = [&]() {
+    std::uint64_t v = 0;
+    if (bytes.size() - at < sizeof v) throw CheckpointError(path + ": the feeders' state is truncated");
+    std::memcpy(&v, bytes.data() + at, sizeof v);
+    at += sizeof v;
+    return v;
+  };
+  if (bytes.empty() && feeders.empty()) return;
+  if (bytes.empty() || get() != feeders.size())
+    throw CheckpointError(path + ": the checkpoint holds another number of feeders than the scene's [[feed]] tables");
+  for (auto& f : feeders) {
+    const std::uint64_t n = get();
+    if (bytes.size() - at < n) throw CheckpointError(path + ": a feeder's state is truncated");
+    f.restore(bytes.substr(at, n));
+    at += n;
+  }
+}
+
 template <class Real, class Law, class Shape>
 int run_scene(const Scene& s, const Options& o) {
   constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
@@ -156,13 +193,19 @@ int run_scene(const Scene& s, const Options& o) {
   }
   Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
                               : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
+  // The [[feed]]s (pipeline/feeder.hpp), their state restored with the run's.
+  std::vector<Feeder<Real>> feeders;
+  const PolyhedronTable<Real>* table = nullptr;
+  if constexpr (polyhedra) table = &shape.table;
+  for (std::size_t k = 0; k < s.feeds.size(); ++k) feeders.emplace_back(s, k, table);
+  if (!o.restart.empty()) restore_feeders(feeders, restart.feeders, o.restart);
 
   const std::string& dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
   const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
   RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
-                   resume_at, sim.keeps_energy_ledger(), reported_loads(s));
+                   resume_at, sim.keeps_energy_ledger(), reported_loads(s), !feeders.empty());
   // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
   // it is downloaded only if a guard stops the run.
   sim.keep_state();
@@ -171,6 +214,8 @@ int run_scene(const Scene& s, const Options& o) {
   // A world that moves gets a walls frame with every particles frame (walls.vtu: where it started).
   std::unique_ptr<PvdCollection> pvd_walls = sim.world_moves() ? std::make_unique<PvdCollection>(dir + "/walls.pvd") : nullptr;
   int frame = 0;
+  constexpr long kMaxFeedNotes = 10;
+  long feed_notes = 0;
   BackgroundWriter frames;  // VTU frames written while the steps go on (after pvd: it goes first)
   if (!o.restart.empty()) {
     log.resume(restart_log);
@@ -209,7 +254,8 @@ int run_scene(const Scene& s, const Options& o) {
   // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
   // the GPU can batch them (Simulation::run).
   const auto next_event = [&](std::uint64_t k) {
-    const std::uint64_t next = blaze::next_event(k, steps, {csv_every, vtu_every, checkpoint_every});
+    std::uint64_t next = blaze::next_event(k, steps, {csv_every, vtu_every, checkpoint_every});
+    for (const auto& f : feeders) next = std::min(next, f.next_insertion(k + 1));
     // and the progress line now and then: about 1e7 particle-steps apart (~3 s on 2 CPU cores)
     const std::uint64_t chunk = std::clamp<std::uint64_t>(10000000 / std::max<std::uint64_t>(1, sim.size()), 1, 10000);
     return std::min(next, k + chunk);
@@ -220,7 +266,7 @@ int run_scene(const Scene& s, const Options& o) {
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
     const auto output_start = std::chrono::steady_clock::now();
     if (checkpoint_every && k > first && k % checkpoint_every == 0)
-      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save());
+      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save(), save_feeders(feeders));
     if (write_csv || write_vtu) {
       if (write_csv) log.sample(sim);  // the guards: a state that trips one is not a good one
       sim.keep_state();
@@ -247,6 +293,13 @@ int run_scene(const Scene& s, const Options& o) {
     }
     output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
     if (k >= steps) break;  // (a restart may begin at or past the end)
+    for (auto& f : feeders)  // after the step's sample: its energy enters the balance from the next
+      if (f.inserts_at(k)) {
+        f.feed(sim);
+        if (f.shortfall() > 0 && feed_notes++ < kMaxFeedNotes)
+          std::printf("note: t = %.6g s: %s: %ld particles could not be placed (the region is full); they stay due%s\n", sim.time(),
+                      f.spec().name.c_str(), f.shortfall(), feed_notes == kMaxFeedNotes ? " [further such notes omitted]" : "");
+      }
     const std::uint64_t next = next_event(k);
     sim.run(next - k);
     particle_steps += static_cast<double>(sim.size()) * static_cast<double>(next - k);
@@ -270,6 +323,16 @@ int run_scene(const Scene& s, const Options& o) {
   else
     std::printf("; no csv_interval: penetration and energy were not sampled");
   std::printf("\n");
+  for (const auto& f : feeders) {
+    std::printf("feed %s: %ld particles inserted (%.4g kg)", f.spec().name.c_str(), f.inserted(), f.inserted_mass());
+    if (f.undelivered() > 0 && sim.time() >= f.spec().end - 0.5 * s.dt)
+      std::printf(", %ld due by its end could NOT be placed (%ld insertions fell short)", f.undelivered(), f.short_insertions());
+    if (f.spec().size.kind != SizeKind::constant && f.inserted() > 0)
+      std::printf("; sizes: Kolmogorov-Smirnov distance %.3g from the requested %s distribution (by %s; %.3g expected at this "
+                  "count)", f.ks_distance(), to_string(f.spec().size.kind), f.spec().size.by_mass ? "mass" : "number",
+                  1.36 / std::sqrt(static_cast<double>(f.inserted())));
+    std::printf("\n");
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   std::printf("wall time %.3f s for the steps and output, %.4g particle-steps/s\n", wall, wall > 0 ? particle_steps / wall : 0.0);
   const double stepping = wall - output_seconds;

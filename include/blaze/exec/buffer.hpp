@@ -1,6 +1,7 @@
 // An owning, uninitialised array in one memory space (move-only). Kernels never see it: they get
 // raw pointers through views.
 #pragma once
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <type_traits>
@@ -39,6 +40,9 @@ class Buffer {
     data_ = static_cast<T*>(Space::allocate(n * sizeof(T)));
     size_ = n;
   }
+  // Grows to at least n elements keeping the first `keep` (a store that takes in particles;
+  // capacity grows by half again, so appends allocate O(log n) times). Never shrinks.
+  void grow_keep(std::size_t n, std::size_t keep);
   T* data() { return data_; }
   const T* data() const { return data_; }
   std::size_t size() const { return size_; }
@@ -59,6 +63,14 @@ void copy_n(const T* src, std::size_t n, T* dst, S1, S2) {
   if (n) cuda_check(cudaMemcpy(dst, src, n * sizeof(T), cudaMemcpyDefault), "cudaMemcpy");
 }
 #endif
+
+template <class T, class Space>
+void Buffer<T, Space>::grow_keep(std::size_t n, std::size_t keep) {
+  if (n <= size_) return;
+  Buffer bigger(std::max(n, size_ + size_ / 2));
+  copy_n(data_, std::min(keep, size_), bigger.data(), Space{}, Space{});
+  swap(bigger);
+}
 
 template <class T, class Space>
 std::vector<T> to_host(const Buffer<T, Space>& b, std::size_t n) {

@@ -1,14 +1,16 @@
 // Checkpoint files: a SimulationSnapshot plus the driver's own text (run metadata), versioned and
 // checksummed, written atomically.
 //
-// Layout (little-endian, version 4):
+// Layout (little-endian, version 5; version 4, without the last line, is read too):
 //   "BLZCKPT" '\0' | u32 version | u32 bytes per real (4 or 8) | u64 payload bytes | payload |
 //   u64 FNV-1a 64 of the payload
 //   payload: u64 steps, i64 initial count, i64 removed count, f64 removed mass, f64 removed energy,
 //            u32 real arrays, each u64 length + values; u64 n, n material bytes, n type bytes,
 //            n ids (i32); contact store: u32 reals per contact, pair ids (u64 length + i32
 //            pairs), pair values (u64 length + reals), wall ids, wall keys (i32), wall values;
-//            u64 text length + text
+//            u64 text length + text;
+//            i64 inserted count, f64 inserted mass, energy and kinetic energy, i64 next id, u64 length +
+//            the feeders' state (opaque bytes, pipeline/feeder.hpp)
 // Writing goes to <path>.tmp, is flushed and fsync'ed, then renamed over <path>: a run killed
 // mid-write (even by SIGKILL) leaves the previous checkpoint whole. Reading rejects a wrong magic,
 // version or precision, a truncated file and a checksum mismatch, each with a message naming the
@@ -17,6 +19,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -35,7 +38,7 @@ struct CheckpointError : std::runtime_error {
 namespace checkpoint_detail {
 
 constexpr char kMagic[8] = {'B', 'L', 'Z', 'C', 'K', 'P', 'T', '\0'};
-constexpr std::uint32_t kVersion = 4;  // 2: the removed particles' energy; 3: the contact store; 4: 32-bit wall keys (meshes)
+constexpr std::uint32_t kVersion = 5;  // 2: the removed particles' energy; 3: the contact store; 4: 32-bit wall keys (meshes); 5: feeders
 
 inline std::uint64_t fnv1a(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -90,7 +93,8 @@ class Reader {
 }  // namespace checkpoint_detail
 
 template <class Real>
-void write_checkpoint(const std::string& path, const SimulationSnapshot<Real>& s, const std::string& text) {
+void write_checkpoint(const std::string& path, const SimulationSnapshot<Real>& s, const std::string& text,
+                      const std::string& feeders = "") {
   using namespace checkpoint_detail;
   std::string payload;
   put(payload, s.steps);
@@ -112,6 +116,13 @@ void write_checkpoint(const std::string& path, const SimulationSnapshot<Real>& s
   put_array(payload, s.contacts.wall_values);
   put(payload, static_cast<std::uint64_t>(text.size()));
   payload += text;
+  put(payload, static_cast<std::int64_t>(s.inserted_count));
+  put(payload, s.inserted_mass);
+  put(payload, s.inserted_energy);
+  put(payload, s.inserted_kinetic);
+  put(payload, static_cast<std::int64_t>(s.next_id));
+  put(payload, static_cast<std::uint64_t>(feeders.size()));
+  payload += feeders;
 
   std::string file(kMagic, sizeof kMagic);
   put(file, kVersion);
@@ -141,6 +152,7 @@ template <class Real>
 struct Checkpoint {
   SimulationSnapshot<Real> snapshot;
   std::string text;
+  std::string feeders;  // the feeders' state (pipeline/feeder.hpp); empty before version 5
 };
 
 template <class Real>
@@ -159,7 +171,7 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
   const auto version = head.get<std::uint32_t>();
   const auto real_bytes = head.get<std::uint32_t>();
   const auto payload_bytes = head.get<std::uint64_t>();
-  if (version != kVersion)
+  if (version != kVersion && version != 4)
     throw CheckpointError(path + ": checkpoint version " + std::to_string(version) + ", this Blaze reads version " +
                           std::to_string(kVersion));
   if (real_bytes != sizeof(Real))
@@ -202,6 +214,17 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
     r.fail("the contact store's arrays disagree in length");
   const auto text = r.array<char>();
   c.text.assign(text.begin(), text.end());
+  if (version >= 5) {
+    s.inserted_count = static_cast<Index>(r.get<std::int64_t>());
+    s.inserted_mass = r.get<double>();
+    s.inserted_energy = r.get<double>();
+    s.inserted_kinetic = r.get<double>();
+    s.next_id = static_cast<Index>(r.get<std::int64_t>());
+    const auto feeders = r.array<char>();
+    c.feeders.assign(feeders.begin(), feeders.end());
+  } else {
+    for (Index id : s.store.id) s.next_id = std::max(s.next_id, id + 1);
+  }
   if (!r.done()) r.fail("bytes after the end");
   for (const auto& a : s.store.reals)
     if (!a.empty() && a.size() != n) r.fail("an array's length differs from the particle count");

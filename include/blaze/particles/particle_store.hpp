@@ -60,6 +60,8 @@ class ParticleStore {
               bool thesis_estimate = false) {
     s.check_consistent();
     n_ = static_cast<Index>(s.size());
+    with_previous_ = keep_previous_forces, with_penetration_ = monitor, with_ledger_ = ledger;
+    with_thesis_ = ledger && thesis_estimate;
     std::vector<Real> inv_m(n_), inv_i(n_);
     for (Index i = 0; i < n_; ++i) {
       inv_m[i] = Real(1) / s.mass[i];
@@ -91,6 +93,50 @@ class ParticleStore {
     from_host(class_sums_, std::vector<Real>(ledger ? kClassSumReals * n_ : 0, Real(0)));
     from_host(thesis_, std::vector<Real>(ledger && thesis_estimate ? n_ : 0, Real(0)));
     scratch_real_.resize(n_);
+  }
+
+  // Adds `s`'s particles after the active ones (a feeder's insertion, pipeline/feeder.hpp): their
+  // state as given, force, torque and every account zero. Buffers grow by half again when full
+  // (Buffer::grow_keep), so a feed of N particles allocates O(log N) times.
+  void append(const ParticleState<Real>& s) {
+    s.check_consistent();
+    const std::size_t n = static_cast<std::size_t>(n_), m = s.size(), total = n + m;
+    if (m == 0) return;
+    std::vector<Real> c(m), zeros(m, Real(0));
+    auto put3 = [&](Field3& f, const std::vector<Vec3<Real>>* v) {
+      for (int d = 0; d < 3; ++d) {
+        for (std::size_t k = 0; k < m; ++k) c[k] = v ? (d == 0 ? (*v)[k].x : d == 1 ? (*v)[k].y : (*v)[k].z) : Real(0);
+        put(f[d], c, n, total);
+      }
+    };
+    put3(position_, &s.position);
+    put3(velocity_, &s.velocity);
+    put3(angular_velocity_, &s.angular_velocity);
+    put3(force_, nullptr);
+    put3(torque_, nullptr);
+    if (with_previous_) put3(acceleration_prev_, nullptr), put3(torque_prev_, nullptr);
+    for (int q = 0; q < 4; ++q) {
+      for (std::size_t k = 0; k < m; ++k) {
+        const Quat<Real>& o = s.orientation[k];
+        c[k] = q == 0 ? o.w : q == 1 ? o.x : q == 2 ? o.y : o.z;
+      }
+      put(orientation_[q], c, n, total);
+    }
+    put(radius_, s.radius, n, total);
+    for (std::size_t k = 0; k < m; ++k) c[k] = Real(1) / s.mass[k];
+    put(inv_mass_, c, n, total);
+    for (std::size_t k = 0; k < m; ++k) c[k] = Real(1) / s.inertia[k].x;
+    put(inv_inertia_, c, n, total);
+    put(material_, s.material, n, total);
+    put(type_, s.type, n, total);
+    put(id_, s.id, n, total);
+    if (with_penetration_) put(penetration_, zeros, n, total);
+    if (with_ledger_)
+      for (auto& l : ledger_) put(l, zeros, n, total);
+    if (with_thesis_) put(thesis_, zeros, n, total);
+    if (with_ledger_ && class_sums_.size() < kClassSumReals * total)  // per-step scratch, column stride: laid anew
+      from_host(class_sums_, std::vector<Real>(kClassSumReals * std::max(total, n + n / 2), Real(0)));
+    n_ = static_cast<Index>(total);
   }
 
   // The active particles [0, n) back on the host, in the store's current (sorted) order.
@@ -134,8 +180,20 @@ class ParticleStore {
       if (c.size() < static_cast<std::size_t>(n_)) from_host(c, std::vector<Real>(n_, Real(0)));
     from_host(class_sums_, std::vector<Real>(kClassSumReals * static_cast<std::size_t>(n_), Real(0)));
     from_host(thesis_, std::vector<Real>(thesis_estimate ? n_ : 0, Real(0)));  // not in snapshots: from zero
+    with_ledger_ = true, with_thesis_ = thesis_estimate;
   }
-  bool keeps_ledger() const { return ledger_[0].size() > 0; }
+  bool keeps_ledger() const { return with_ledger_; }
+  // A restored store keeps the optional fields its run keeps (a snapshot of no particles has
+  // none to tell by): the previous forces and the penetration monitor, zero where missing.
+  void keep_fields(bool keep_previous_forces, bool monitor) {
+    with_previous_ = keep_previous_forces, with_penetration_ = monitor;
+    const std::vector<Real> zeros(static_cast<std::size_t>(n_), Real(0));
+    if (keep_previous_forces)
+      for (auto* f : {&acceleration_prev_, &torque_prev_})
+        for (auto& c : *f)
+          if (c.size() < zeros.size()) from_host(c, zeros);
+    if (monitor && penetration_.size() < zeros.size()) from_host(penetration_, zeros);
+  }
 
   ParticleView<Real> view() {
     return {n_, field(position_), field(velocity_), field(angular_velocity_), field(force_),
@@ -274,6 +332,12 @@ class ParticleStore {
     if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
     return f;
   }
+  // b[n, n + v.size()) = v, growing b (keeping [0, n)) when it is shorter than `total`.
+  template <class T>
+  static void put(Buffer<T, Space>& b, const std::vector<T>& v, std::size_t n, std::size_t total) {
+    b.grow_keep(total, n);
+    copy_n(v.data(), v.size(), b.data() + n, Host{}, Space{});
+  }
   template <class T>
   static void copy_field(Buffer<T, Space>& dst, const Buffer<T, Space>& src, std::size_t n) {
     if (dst.size() < n) dst.resize(src.size());
@@ -290,6 +354,8 @@ class ParticleStore {
   }
 
   Index n_ = 0;
+  // Which optional fields this store keeps (their buffers are empty while it holds no particle).
+  bool with_previous_ = false, with_penetration_ = false, with_ledger_ = false, with_thesis_ = false;
   Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_, torque_prev_;
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;

@@ -73,6 +73,16 @@ inline double scene_particles(const Scene& s, RunSize* z = nullptr) {
              "count");
   for (std::size_t k = 0; k < s.lists.size(); ++k) consider(double(s.lists[k].position.size()), "particles", k, "positions");
   for (std::size_t k = 0; k < s.fills.size(); ++k) consider(double(s.fills[k].count), "fill", k, "count");
+  // feeds: the most they can insert (by mass: in particles of the smallest size)
+  for (std::size_t k = 0; k < s.feeds.size(); ++k) {
+    const FeedSpec& f = s.feeds[k];
+    const ParticleTypeSpec& t = s.types[static_cast<std::size_t>(f.type)];
+    const double r = f.size.smallest(), rho = s.materials[static_cast<std::size_t>(t.material)].density;
+    const double lightest = rho * (t.is_sphere() ? 4.0 / 3.0 * 3.14159265358979 * r * r * r : t.volume);
+    double n = (f.end - f.start) * (f.rate > 0 ? f.rate : f.mass_rate / lightest) + 1;
+    if (f.count > 0) n = std::min(n, static_cast<double>(f.count));
+    consider(n, "feed", k, f.rate > 0 ? "rate" : "mass_rate");
+  }
   return total;
 }
 

@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 #include "blaze/core/vec3.hpp"
+#include "blaze/scene/insertion_region.hpp"
 #include "blaze/scene/mill_geometry.hpp"
+#include "blaze/scene/size_distribution.hpp"
 #include "blaze/world/motion.hpp"
 #include "blaze/world/triangle_mesh.hpp"
 
@@ -104,6 +106,28 @@ struct FillSpec {
   Vec3<double> lo, hi;  // m, box the particles (whole) lie in
   long count = 0;
   Vec3<double> velocity;  // m/s
+};
+
+// A feeder ([[feed]], pipeline/feeder.hpp): particles of one type placed at random in `region`
+// where they overlap nothing, from start to end at `rate` particles/s or `mass_rate` kg/s (the
+// due count or mass, rate x (t - start), is met at every insertion `interval`, what could not be
+// placed staying due and reported), with `velocity` plus a uniform random spread of +- `spread`
+// per component, random orientations for polyhedra, sizes from `size` (spheres; polyhedra take
+// their type's bounding_radius).
+struct FeedSpec {
+  std::string name;               // "[[feed]] #k" unless named
+  int type = 0;
+  InsertionRegion region;
+  double start = 0, end = 0;      // s
+  double rate = 0;                // particles/s (0: mass_rate)
+  double mass_rate = 0;           // kg/s (0: rate)
+  long count = 0;                 // the most particles it inserts (0: no limit)
+  Vec3<double> velocity;          // m/s
+  double spread = 0;              // m/s
+  bool random_orientation = true;
+  double interval = 0;            // s between insertions
+  SizeDistribution size;          // m
+  std::uint64_t seed = 0;         // its own random stream (the scene's seed + its index unless given)
 };
 
 struct WallSpec {  // convex planar polygon; the normal follows the right-hand rule of the vertex order
@@ -212,6 +236,7 @@ struct Scene {
   std::vector<WallSpec> walls;
   std::vector<CylinderSpec> cylinders;
   std::vector<MeshSpec> meshes;
+  std::vector<FeedSpec> feeds;
   MillSpec mill;  // [mill]: its shell, end plates and lifters are in cylinders and walls (named "mill ...")
   std::vector<StudyValue> study;
   // "file:line" of the keys that derived sizes and run checks blame, by their --set name

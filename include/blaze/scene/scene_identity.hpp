@@ -135,6 +135,22 @@ inline SceneIdentity scene_identity(const Scene& s) {
     add(p + "count", std::to_string(f.count));
     add(p + "velocity", vec(f.velocity));
   }
+  for (std::size_t k = 0; k < s.feeds.size(); ++k) {
+    const auto& f = s.feeds[k];
+    const std::string p = "feed[" + std::to_string(k) + "].";
+    const auto& g = f.region;
+    const auto& d = f.size;
+    add(p + "type", s.types[static_cast<std::size_t>(f.type)].name);
+    add(p + "region", std::string(to_string(g.kind)) + vec(g.lo) + vec(g.hi) + vec(g.centre) + vec(g.axis) + num(g.radius) + num(g.length));
+    add(p + "times", num(f.start) + " " + num(f.end) + " " + num(f.interval));
+    add(p + "rate", num(f.rate) + " " + num(f.mass_rate) + " " + std::to_string(f.count));
+    add(p + "velocity", vec(f.velocity) + num(f.spread) + (f.random_orientation ? " oriented" : ""));
+    std::string classes;
+    for (std::size_t c = 0; c < d.sizes.size(); ++c) classes += num(d.sizes[c]) + ":" + num(d.fractions[c]) + " ";
+    add(p + "size", std::string(to_string(d.kind)) + (d.by_mass ? " by mass " : " by number ") + classes + num(d.radius) + num(d.mean) +
+                        num(d.deviation) + num(d.scale) + num(d.shape) + num(d.min) + num(d.max));
+    add(p + "seed", std::to_string(f.seed));
+  }
   for (std::size_t k = 0; k < s.walls.size(); ++k) {
     const auto& w = s.walls[k];
     const std::string p = "wall[" + std::to_string(k) + "].";

@@ -29,6 +29,9 @@ struct SimulationSnapshot {
   std::uint64_t steps = 0;
   Index initial_count = 0, removed_count = 0;
   double removed_mass = 0, removed_energy = 0;
+  Index inserted_count = 0;  // particles inserted after the start (feeders)
+  double inserted_mass = 0, inserted_energy = 0, inserted_kinetic = 0;  // kg; J when inserted (all, kinetic)
+  Index next_id = 0;  // the next inserted particle's permanent id
 };
 
 }  // namespace blaze
