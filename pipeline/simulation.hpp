@@ -23,6 +23,7 @@
 #include "kernels/sample_tally.hpp"
 #include "kernels/contact_forces.hpp"
 #include "kernels/pair_forces.hpp"
+#include "kernels/region_query.hpp"
 #include "kernels/integrate.hpp"
 #include "kernels/move_world.hpp"
 #include "kernels/world_forces.hpp"
@@ -351,20 +352,27 @@ class Simulation {
     rebuild(true);
   }
   // Centres and bounding radii of the particles whose centre lies in [lo, hi] (m): what a feeder
-  // must keep clear of. Downloads the positions and radii (16 or 32 B per particle).
+  // must keep clear of. Found where the particles live (kernels/region_query.hpp); reads back a
+  // byte per particle and the centres found.
   void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre,
-                        std::vector<double>& radius) const {
+                        std::vector<double>& radius) {
     centre.clear(), radius.clear();
-    const ParticleView<Real> p = const_cast<ParticleStore<Real, Space>&>(store_).view();
+    const ParticleView<Real> p = store_.view();
     const std::size_t n = static_cast<std::size_t>(p.n);
-    std::vector<Real> x(n), y(n), z(n), r(n);
-    copy_n(p.position.x, n, x.data(), Space{}, Host{});
-    copy_n(p.position.y, n, y.data(), Space{}, Host{});
-    copy_n(p.position.z, n, z.data(), Space{}, Host{});
-    copy_n(p.radius, n, r.data(), Space{}, Host{});
-    for (std::size_t k = 0; k < n; ++k)
-      if (x[k] >= lo.x && x[k] <= hi.x && y[k] >= lo.y && y[k] <= hi.y && z[k] >= lo.z && z[k] <= hi.z)
-        centre.push_back({x[k], y[k], z[k]}), radius.push_back(r[k]);
+    if (n == 0) return;
+    query_flags_.resize(std::max(query_flags_.size(), n));
+    for_each(Space{}, p.n, InBox<Real>{p.position, vec_cast<Real>(lo), vec_cast<Real>(hi), query_flags_.data()});
+    const std::vector<std::uint8_t> flags = to_host(query_flags_, n);
+    std::vector<Index> which;
+    for (std::size_t i = 0; i < n; ++i)
+      if (flags[i]) which.push_back(static_cast<Index>(i));
+    if (which.empty()) return;
+    from_host(query_which_, which);
+    query_out_.resize(std::max(query_out_.size(), 4 * which.size()));
+    for_each(Space{}, static_cast<Index>(which.size()), GatherCentres<Real>{p.position, p.radius, query_which_.data(), query_out_.data()});
+    const std::vector<Real> out = to_host(query_out_, 4 * which.size());
+    for (std::size_t k = 0; k < which.size(); ++k)
+      centre.push_back({out[4 * k], out[4 * k + 1], out[4 * k + 2]}), radius.push_back(out[4 * k + 3]);
   }
   double removed_mass() const { return removed_mass_; }
   // Translational kinetic + potential energy the removed particles had when they were removed, J.
@@ -696,6 +704,9 @@ class Simulation {
   BroadPhase<Real, Space> broad_;
   PhaseTimer<Space> timer_;
   Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)
+  Buffer<std::uint8_t, Space> query_flags_;  // particles_in_box
+  Buffer<Index, Space> query_which_;
+  Buffer<Real, Space> query_out_;
   std::uint64_t batch_ = kMinBatch;
   Index initial_count_ = 0;
   Index removed_count_ = 0;

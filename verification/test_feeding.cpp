@@ -10,6 +10,7 @@
 // - a restart from a checkpoint continues the same feed bit for bit (particles, sizes, counts);
 // - inserting a particle next to a bed does not disturb its contact histories: two spheres held
 //   on a slope by their tangential springs move bitwise as without the insertion;
+// - a pour settles to random loose packing (solid fraction >= 0.55 in the bulk);
 // - elastic frictionless spheres fed into a closed box keep E(t) = E_inserted (the balance the
 //   run's energy guard checks);
 // - bad [[feed]] keys are refused naming the file, the table and the key.
@@ -422,6 +423,33 @@ BOOST_AUTO_TEST_CASE(energy_is_balanced_through_insertion) {
   check_at_most({"Feeding: energy balance", "|E(t) - E_inserted| / inserted kinetic energy, elastic frictionless spheres", "-",
                  "energy conservation"},
                 worst, tol::feed_energy_balance);
+}
+
+// A dense fill by pouring: 3000 beads fed in 0.15 s settle in the box; the solid fraction in its
+// bulk (a box 1.7 diameters from the side walls, 2 from the floor, below the bed's top) reaches
+// random loose packing (the 0.55; frictional spheres settle at 0.55-0.60: Onoda & Liniger
+// 1990, Scott 1960), where a [[fill]] stops at 0.3.
+BOOST_AUTO_TEST_CASE(a_pour_settles_to_random_loose_packing) {
+  using Run = FeedRun<SphereShape, LinearLaw<double>>;
+  const Scene s = parse_scene(feed_scene("type = \"bead\"\nrate = 20000\ncount = 3000\nvelocity = [0, -0.3, 0]\n"
+                                         "region = { kind = \"box\", lo = [-0.037, 0.12, -0.037], hi = [0.037, 0.19, 0.037] }"),
+                              "pour.toml");
+  Run run(s);
+  run.run(static_cast<std::uint64_t>(std::llround(0.45 / s.dt)));
+  const auto st = run.sim->state();
+  double top = 0, solid = 0;
+  for (std::size_t k = 0; k < st.size(); ++k) top = std::max(top, static_cast<double>(st.position[k].y));
+  const double lo_y = 0.012, hi_y = top - 0.015, half = 0.03;  // m
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    const auto& x = st.position[k];
+    if (std::fabs(x.x) < half && std::fabs(x.z) < half && x.y > lo_y && x.y < hi_y)
+      solid += 4.0 / 3.0 * M_PI * std::pow(static_cast<double>(st.radius[k]), 3);  // centres in the box: unbiased
+  }
+  BOOST_TEST(run.feeders[0].inserted() == 3000);
+  BOOST_TEST(hi_y - lo_y > 0.03);  // a bulk many diameters deep
+  check_at_least({"Feeding: poured fill", "solid fraction in the bulk of 3000 settled beads (mu = 0.3)", "0.3 (random fill)",
+                  "random loose packing 0.55-0.60 (Onoda & Liniger 1990)"},
+                 solid / (4 * half * half * (hi_y - lo_y)), tol::feed_poured_fraction);
 }
 
 template <class F>

@@ -236,6 +236,7 @@ int run_scene(const Scene& s, const Options& o) {
   const std::uint64_t builds_before = sim.neighbour_builds();
   sim.timer().enabled = o.phases;
   double output_seconds = 0;  // samples, frame downloads and checkpoints (the GPU idle meanwhile)
+  double feed_seconds = 0;    // the feeders' insertions (placement on the host, insertion, rebuild)
   const auto loop_start = std::chrono::steady_clock::now();
   // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
   const auto stop = [&](const std::exception& e) {
@@ -295,7 +296,9 @@ int run_scene(const Scene& s, const Options& o) {
     if (k >= steps) break;  // (a restart may begin at or past the end)
     for (auto& f : feeders)  // after the step's sample: its energy enters the balance from the next
       if (f.inserts_at(k)) {
+        const auto feed_start = std::chrono::steady_clock::now();
         f.feed(sim);
+        feed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - feed_start).count();
         if (f.shortfall() > 0 && feed_notes++ < kMaxFeedNotes)
           std::printf("note: t = %.6g s: %s: %ld particles could not be placed (the region is full); they stay due%s\n", sim.time(),
                       f.spec().name.c_str(), f.shortfall(), feed_notes == kMaxFeedNotes ? " [further such notes omitted]" : "");
@@ -335,11 +338,14 @@ int run_scene(const Scene& s, const Options& o) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   std::printf("wall time %.3f s for the steps and output, %.4g particle-steps/s\n", wall, wall > 0 ? particle_steps / wall : 0.0);
-  const double stepping = wall - output_seconds;
+  const double stepping = wall - output_seconds - feed_seconds;
   const std::uint64_t taken = sim.steps() - first, builds = sim.neighbour_builds() - builds_before;
   std::printf("  steps %.3f s (%.4g particle-steps/s), output %.3f s (%.0f%%); %llu neighbour-list builds (every %.3g steps)\n",
               stepping, stepping > 0 ? particle_steps / stepping : 0.0, output_seconds, wall > 0 ? 100 * output_seconds / wall : 0.0,
               static_cast<unsigned long long>(builds), builds ? static_cast<double>(taken) / static_cast<double>(builds) : 0.0);
+  if (!feeders.empty())
+    std::printf("  feeding %.3f s (%.2g%% of the steps' time): placing, inserting and re-sorting\n", feed_seconds,
+                stepping > 0 ? 100 * feed_seconds / stepping : 0.0);
   if (o.phases && taken > 0) {  // per step, GPU time on the GPU (phase_timer.hpp)
     std::printf("  phases, ms per step:");
     for (const auto& [phase, seconds] : sim.timer().seconds())
