@@ -35,6 +35,8 @@ using namespace blaze::test;
 
 namespace {
 
+BOOST_AUTO_TEST_SUITE(feeding)
+
 std::string temp(const std::string& name) { return (std::filesystem::temp_directory_path() / name).string(); }
 
 // The Kolmogorov-Smirnov limit for n samples of weights w (99%: 1.63 / sqrt(n_eff), n_eff =
@@ -501,5 +503,7 @@ BOOST_AUTO_TEST_CASE(a_distribution_sizes_the_run) {
   // the lightest pair (0.5 mm beads, 512 x lighter) sets a shorter critical step
   BOOST_TEST(s.dt_critical < 0.1 * plain.dt_critical);
 }
+
+BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace
