@@ -83,9 +83,11 @@ $(BUILD)/cuda/blaze_tests: $(TEST_SRC:%.cpp=$(BUILD)/cuda/%.o) $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@ $(TEST_LIBS_cuda)
 
 # blaze run SCENE.toml: the general scene runner, one per backend.
-$(BUILD)/cpu/blaze: $(BUILD)/cpu/apps/blaze/main.o $(HOST_OBJ)
+# Its units: main.cpp and the law families' run_*.cpp (apps/blaze/run_scene.hpp), built in parallel.
+BLAZE_SRC := $(wildcard apps/blaze/*.cpp)
+$(BUILD)/cpu/blaze: $(BLAZE_SRC:%.cpp=$(BUILD)/cpu/%.o) $(HOST_OBJ)
 	$(CXX) $(LDFLAGS_cpu) $^ -o $@
-$(BUILD)/cuda/blaze: $(BUILD)/cuda/apps/blaze/main.o $(HOST_OBJ)
+$(BUILD)/cuda/blaze: $(BLAZE_SRC:%.cpp=$(BUILD)/cuda/%.o) $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
 $(BUILD)/cpu/study_%: $(BUILD)/cpu/studies/%/main.o $(HOST_OBJ)

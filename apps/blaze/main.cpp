@@ -4,34 +4,20 @@
 // One binary per backend: build/cpu/blaze (OpenMP) and build/cuda/blaze (GPU). The scene picks
 // the precision (float, double), the law (linear, hertz) and, through its particle types, the
 // shape policy (spheres, or polyhedra with spheres); each combination is one instantiation of the
-// same Simulation template.
-#include <unistd.h>
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
+// same Simulation template, compiled in the law families' units apps/blaze/run_*.cpp (run_scene.hpp).
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <memory>
-#include "blaze/shapes/sphere_shape.hpp"
+#include <cstdlib>
+#include <string>
+#include "apps/blaze/run_families.hpp"
 #include "blaze/exec/device_info.hpp"
-#include "blaze/io/background_writer.hpp"
-#include "blaze/io/checkpoint.hpp"
-#include "blaze/io/vtu_writer.hpp"
+#include "blaze/io/console.hpp"
+#include "blaze/scene/run_size.hpp"
+#include "blaze/scene/critical_step.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
-#include "blaze/scene/run_size.hpp"
-#include "blaze/scene/scene_identity.hpp"
-#include "pipeline/feeder.hpp"
-#include "pipeline/run_log.hpp"
-#include "blaze/sim/schedule.hpp"
-#include "pipeline/scene_params.hpp"
-#include "pipeline/simulation.hpp"
-#include "blaze/io/console.hpp"
 
 using namespace blaze;
+using blaze::app::Options;
 
 namespace {
 
@@ -63,12 +49,6 @@ const char* kUsage =
     "[output] energy_gain_limit (an unstable time step). Exit status 0 on success, 1 on a rejected\n"
     "scene or a failed run, 2 on a usage error, 3 when a guard stopped the run.\n";
 
-struct Options {
-  std::string scene, restart;
-  std::vector<std::string> overrides;
-  bool quiet = false, check = false, phases = false;
-};
-
 Options parse_args(int argc, char** argv) {
   Options o;
   if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
@@ -99,284 +79,14 @@ Options parse_args(int argc, char** argv) {
   return o;
 }
 
-// "t = 0.25 / 1 s (25%)  3.1e+06 particle-steps/s  ETA 12 s": on a terminal one line redrawn
-// twice a second; into a file or a pipe (a batch job) a line every minute, so that a long run is
-// never silent. --quiet turns both off.
-class Progress {
- public:
-  Progress(bool on, double end_time)
-      : on_(on), tty_(isatty(2)), end_(end_time), start_(clock::now()), last_(start_) {}
-  void update(double t, double particle_steps, bool force = false) {
-    if (!on_) return;
-    const auto now = clock::now();
-    if (!force && std::chrono::duration<double>(now - last_).count() < (tty_ ? 0.5 : 60.0)) return;
-    if (force && !tty_) return;  // the summary line follows
-    last_ = now;
-    const double wall = std::chrono::duration<double>(now - start_).count(), frac = t / end_;
-    const double eta = frac > 0 ? wall * (1 - frac) / frac : 0;
-    std::fprintf(stderr, "%s  t = %.4g / %.4g s (%3.0f%%)  %.3g particle-steps/s  ETA %.0f s   %s", tty_ ? "\r" : "", t, end_,
-                 100 * frac, wall > 0 ? particle_steps / wall : 0.0, eta, tty_ && !force ? "" : "\n");
-  }
-
- private:
-  using clock = std::chrono::steady_clock;
-  bool on_, tty_;
-  double end_;
-  clock::time_point start_, last_;
-};
-
-// The feeders' states as one byte string for the checkpoint (u64 count, then u64 length + bytes
-// each), and back.
-template <class Real>
-std::string save_feeders(const std::vector<Feeder<Real>>& feeders) {
-  std::string out;
-  auto put = [&](std::uint64_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
-  put(feeders.size());
-  for (const auto& f : feeders) {
-    const std::string b = f.save();
-    put(b.size());
-    out += b;
-  }
-  return out;
-}
-template <class Real>
-void restore_feeders(std::vector<Feeder<Real>>& feeders, const std::string& bytes, const std::string& path) {
-  std::size_t at = 0;
-  auto get = [&]() {
-    std::uint64_t v = 0;
-    if (bytes.size() - at < sizeof v) throw CheckpointError(path + ": the feeders' state is truncated");
-    std::memcpy(&v, bytes.data() + at, sizeof v);
-    at += sizeof v;
-    return v;
-  };
-  if (bytes.empty() && feeders.empty()) return;
-  if (bytes.empty() || get() != feeders.size())
-    throw CheckpointError(path + ": the checkpoint holds another number of feeders than the scene's [[feed]] tables");
-  for (auto& f : feeders) {
-    const std::uint64_t n = get();
-    if (bytes.size() - at < n) throw CheckpointError(path + ": a feeder's state is truncated");
-    f.restore(bytes.substr(at, n));
-    at += n;
-  }
-}
-
-template <class Real, class Law, class Shape>
-int run_scene(const Scene& s, const Options& o) {
-  constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
-  Shape shape;
-  ParticleState<Real> particles;
-  std::vector<ConvexShape> shapes;
-  if constexpr (polyhedra) {
-    shapes = build_shapes(s);
-    shape.table = build_shape_table<Real>(s, shapes);
-    particles = build_particles<Real>(s, &shape.table);
-  } else {
-    particles = build_particles<Real>(s, nullptr);
-  }
-  // Unless the scene says: polyhedra evaluate each pair once (their pairs are dear: 1.8x on the
-  // CPU), spheres from both sides (a sphere pair costs less than its slot's memory traffic).
-  const bool once = s.pair_evaluation == PairsKind::automatic ? std::string(Shape::name) != "sphere"
-                                                              : s.pair_evaluation == PairsKind::once;
-  const SimulationParams<Real> prm = simulation_params<Real>(s, once);
-  const World<Real> world = build_world<Real>(s);
-  using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
-  // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,
-  // and every physical input of the scene must be as it was (scene_identity.hpp).
-  const SceneIdentity scene_id = scene_identity(s);
-  const std::string identity = identity_text(scene_id);
-  Checkpoint<Real> restart;
-  std::string restart_log;  // the run's own bookkeeping saved after the identity
-  if (!o.restart.empty()) {
-    restart = read_checkpoint<Real>(o.restart);
-    const std::string why = identity_difference(restart.text, scene_id, s, restart_log);
-    if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
-  }
-  Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
-                              : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
-  // The [[feed]]s (pipeline/feeder.hpp), their state restored with the run's.
-  std::vector<Feeder<Real>> feeders;
-  const PolyhedronTable<Real>* table = nullptr;
-  if constexpr (polyhedra) table = &shape.table;
-  for (std::size_t k = 0; k < s.feeds.size(); ++k) feeders.emplace_back(s, k, table);
-  if (!o.restart.empty()) restore_feeders(feeders, restart.feeders, o.restart);
-
-  const std::string& dir = s.output.directory;
-  std::filesystem::create_directories(dir + "/vtu");
-  const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
-  const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
-  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
-                   resume_at, sim.keeps_energy_ledger(), reported_loads(s), !feeders.empty());
-  // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
-  // it is downloaded only if a guard stops the run.
-  sim.keep_state();
-  if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
-  PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
-  // A world that moves gets a walls frame with every particles frame (walls.vtu: where it started).
-  std::unique_ptr<PvdCollection> pvd_walls = sim.world_moves() ? std::make_unique<PvdCollection>(dir + "/walls.pvd") : nullptr;
-  int frame = 0;
-  constexpr long kMaxFeedNotes = 10;
-  long feed_notes = 0;
-  BackgroundWriter frames;  // VTU frames written while the steps go on (after pvd: it goes first)
-  if (!o.restart.empty()) {
-    log.resume(restart_log);
-    frame = static_cast<int>(pvd.resume(resume_at));
-    pvd_faces.resume(resume_at);
-    if (pvd_walls) pvd_walls->resume(resume_at);
-    std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
-                static_cast<unsigned long long>(sim.steps()), sim.time());
-  }
-
-  const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));  // <= kMaxSteps (validated)
-  const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
-  const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
-  const std::uint64_t checkpoint_every = every(s.output.checkpoint_interval);
-  Progress progress(!o.quiet, s.end_time);
-  double particle_steps = 0;
-  const std::uint64_t first = sim.steps();
-  const std::uint64_t builds_before = sim.neighbour_builds();
-  sim.timer().enabled = o.phases;
-  double output_seconds = 0;  // samples, frame downloads and checkpoints (the GPU idle meanwhile)
-  double feed_seconds = 0;    // the feeders' insertions (placement on the host, insertion, rebuild)
-  const auto loop_start = std::chrono::steady_clock::now();
-  // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
-  const auto stop = [&](const std::exception& e) {
-    progress.update(sim.time(), particle_steps, true);
-    try {
-      frames.wait();
-    } catch (const std::exception& w) {  // the guard's report and last_good.vtu come first
-      std::fprintf(stderr, "blaze: a frame could not be written: %s\n", w.what());
-    }
-    const ParticleState<Real> last_good = sim.kept_state();
-    write_particles_vtu(dir + "/last_good.vtu", last_good);
-    std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
-                 "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
-    return 3;
-  };
-  // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
-  // the GPU can batch them (Simulation::run).
-  const auto next_event = [&](std::uint64_t k) {
-    std::uint64_t next = blaze::next_event(k, steps, {csv_every, vtu_every, checkpoint_every});
-    for (const auto& f : feeders) next = std::min(next, f.next_insertion(k + 1));
-    // and the progress line now and then: about 1e7 particle-steps apart (~3 s on 2 CPU cores)
-    const std::uint64_t chunk = std::clamp<std::uint64_t>(10000000 / std::max<std::uint64_t>(1, sim.size()), 1, 10000);
-    return std::min(next, k + chunk);
-  };
-  for (std::uint64_t k = first;;) try {
-    const bool resumed = k == first && first > 0;  // that sample is in the files already
-    const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
-    const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
-    const auto output_start = std::chrono::steady_clock::now();
-    if (checkpoint_every && k > first && k % checkpoint_every == 0)
-      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save(), save_feeders(feeders));
-    if (write_csv || write_vtu) {
-      if (write_csv) log.sample(sim);  // the guards: a state that trips one is not a good one
-      sim.keep_state();
-    }
-    if (write_vtu) {  // in the background; the .pvd names a frame once it is written
-      const auto st = std::make_shared<const ParticleState<Real>>(sim.state());
-      const auto walls = pvd_walls ? std::make_shared<const World<Real>>(placed(world, sim.world_poses())) : nullptr;
-      frames.start([&, st, walls, f = frame++, t = sim.time()] {
-        char name[64];
-        std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
-        write_particles_vtu(dir + "/" + name, *st);
-        pvd.add(t, name);
-        if (walls) {
-          std::snprintf(name, sizeof name, "vtu/walls_%04d.vtu", f);
-          write_world_vtu(dir + "/" + name, *walls);
-          pvd_walls->add(t, name);
-        }
-        if constexpr (polyhedra) {
-          std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", f);
-          write_polyhedra_vtu(dir + "/" + name, *st, shapes);
-          pvd_faces.add(t, name);
-        }
-      });
-    }
-    output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
-    if (k >= steps) break;  // (a restart may begin at or past the end)
-    for (auto& f : feeders)  // after the step's sample: its energy enters the balance from the next
-      if (f.inserts_at(k)) {
-        const auto feed_start = std::chrono::steady_clock::now();
-        f.feed(sim);
-        feed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - feed_start).count();
-        if (f.shortfall() > 0 && feed_notes++ < kMaxFeedNotes)
-          std::printf("note: t = %.6g s: %s: %ld particles could not be placed (the region is full); they stay due%s\n", sim.time(),
-                      f.spec().name.c_str(), f.shortfall(), feed_notes == kMaxFeedNotes ? " [further such notes omitted]" : "");
-      }
-    const std::uint64_t next = next_event(k);
-    sim.run(next - k);
-    particle_steps += static_cast<double>(sim.size()) * static_cast<double>(next - k);
-    k = next;
-    progress.update(sim.time(), particle_steps);
-  } catch (const NonFiniteState& e) {
-    return stop(e);
-  } catch (const EnergyGain& e) {
-    return stop(e);
-  }
-  const auto drain_start = std::chrono::steady_clock::now();
-  frames.wait();  // the last frame on disk before the run reports
-  output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - drain_start).count();
-  progress.update(sim.time(), particle_steps, true);
-  std::printf("done: %llu steps, %u particles left, %u removed (left the domain)", static_cast<unsigned long long>(steps),
-              static_cast<unsigned>(sim.size()), static_cast<unsigned>(sim.removed_count()));
-  if (csv_every)  // the guards' figures come from the samples
-    std::printf("; deepest penetration %.3g%% of the radius, over %.3g%% in %ld samples; largest energy gain %.3g of "
-                "the scale", 100 * log.worst_penetration(), 100 * s.output.penetration_warning, log.samples_over_limit(),
-                log.max_energy_gain());
-  else
-    std::printf("; no csv_interval: penetration and energy were not sampled");
-  std::printf("\n");
-  for (const auto& f : feeders) {
-    std::printf("feed %s: %ld particles inserted (%.4g kg)", f.spec().name.c_str(), f.inserted(), f.inserted_mass());
-    if (f.undelivered() > 0 && sim.time() >= f.spec().end - 0.5 * s.dt)
-      std::printf(", %ld due by its end could NOT be placed (%ld insertions fell short)", f.undelivered(), f.short_insertions());
-    if (f.spec().size.kind != SizeKind::constant && f.inserted() > 0)
-      std::printf("; sizes: Kolmogorov-Smirnov distance %.3g from the requested %s distribution (by %s; %.3g expected at this "
-                  "count)", f.ks_distance(), to_string(f.spec().size.kind), f.spec().size.by_mass ? "mass" : "number",
-                  1.36 / std::sqrt(static_cast<double>(f.inserted())));
-    std::printf("\n");
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
-  std::printf("wall time %.3f s for the steps and output, %.4g particle-steps/s\n", wall, wall > 0 ? particle_steps / wall : 0.0);
-  const double stepping = wall - output_seconds - feed_seconds;
-  const std::uint64_t taken = sim.steps() - first, builds = sim.neighbour_builds() - builds_before;
-  std::printf("  steps %.3f s (%.4g particle-steps/s), output %.3f s (%.0f%%); %llu neighbour-list builds (every %.3g steps)\n",
-              stepping, stepping > 0 ? particle_steps / stepping : 0.0, output_seconds, wall > 0 ? 100 * output_seconds / wall : 0.0,
-              static_cast<unsigned long long>(builds), builds ? static_cast<double>(taken) / static_cast<double>(builds) : 0.0);
-  if (!feeders.empty())
-    std::printf("  feeding %.3f s (%.2g%% of the steps' time): placing, inserting and re-sorting\n", feed_seconds,
-                stepping > 0 ? 100 * feed_seconds / stepping : 0.0);
-  if (o.phases && taken > 0) {  // per step, GPU time on the GPU (phase_timer.hpp)
-    std::printf("  phases, ms per step:");
-    for (const auto& [phase, seconds] : sim.timer().seconds())
-      std::printf(" %s %.4g", phase.c_str(), 1e3 * seconds / static_cast<double>(taken));
-    std::printf("\n");
-  }
-  std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)%s\n", dir.c_str(), dir.c_str(), frame,
-              pvd_walls ? " and walls.pvd (the moving world)" : "");
-  return 0;
-}
-
-template <class Real, class Law>
-int run_law(const Scene& s, const Options& o) {
-  return s.all_spheres() ? run_scene<Real, Law, SphereShape>(s, o) : run_scene<Real, Law, PolyhedronShape<Real>>(s, o);
-}
-
-// The scene's law: normal (linear, Hertz) x tangential (history-free, or the spring: the scene
-// parser pairs Mindlin with Hertz and the linear spring with the linear law).
-// Rolling resistance (spheres only, with a spring: the parser sees to both) takes its own law.
+// The scene's law family and precision (apps/blaze/run_*.cpp).
 template <class Real>
 int run_precision(const Scene& s, const Options& o) {
-  const bool spring = s.tangential != TangentialKind::history_free, rolling = s.rolling != RollingKind::none;
-  if (rolling)
-    return s.law == LawKind::linear ? run_scene<Real, LinearSpringRollingLaw<Real>, SphereShape>(s, o)
-                                    : run_scene<Real, HertzMindlinRollingLaw<Real>, SphereShape>(s, o);
-  if (s.law == LawKind::linear) return spring ? run_law<Real, LinearSpringLaw<Real>>(s, o) : run_law<Real, LinearLaw<Real>>(s, o);
-  return spring ? run_law<Real, HertzMindlinLaw<Real>>(s, o) : run_law<Real, HertzLaw<Real>>(s, o);
+  if (s.rolling != RollingKind::none) return app::run_rolling<Real>(s, o);
+  return s.tangential != TangentialKind::history_free ? app::run_spring<Real>(s, o) : app::run_history_free<Real>(s, o);
 }
 
 }  // namespace
-
 int main(int argc, char** argv) try {
   blaze::line_buffered_output();
   const Options o = parse_args(argc, argv);
