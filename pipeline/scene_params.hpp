@@ -4,6 +4,7 @@
 // energy accounts by class ([output] energy_by_class) and the world lists.
 #pragma once
 #include <algorithm>
+#include <string>
 #include "blaze/scene/scene.hpp"
 #include "pipeline/run_log.hpp"
 #include "pipeline/simulation.hpp"
@@ -24,6 +25,13 @@ SimulationParams<Real> simulation_params(const Scene& s, bool pairs_once = false
   // every type's size, the feeds' derived extremes among them: the grid holds what they insert
   p.max_radius = static_cast<Real>(r_max);
   return p;
+}
+
+// A study driver that places its particles itself runs no [[feed]]: a scene that has one is
+// refused rather than run without it (blaze run feeds; pipeline/feeder.hpp).
+inline void refuse_feeds(const Scene& s, const std::string& program) {
+  if (!s.feeds.empty())
+    throw SceneError(s.place("feed[0].rate") + ": " + program + " does not run [[feed]] tables (blaze run does); remove them");
 }
 
 // The world objects whose loads the time series reports (run_log.hpp): every [[mesh]] and every

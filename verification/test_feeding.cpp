@@ -490,6 +490,11 @@ BOOST_AUTO_TEST_CASE(bad_feeds_are_refused_by_name) {
           {"key 'mean'", "not a key"});
   refused("type = \"bead\"\nrate = 10\nspeed = 3\n" + region, {"[[feed]] #1", "unknown key 'speed'"});
   refused("type = \"bead\"\nrate = 10\nend_time = 0\n" + region, {"key 'end_time'", "after start_time"});
+  // a study that places its own particles refuses a scene with feeds rather than run without them
+  const std::string msg = rejection([&] { refuse_feeds(parse_scene(feed_scene("type = \"bead\"\nrate = 10\n" + region), "s.toml"), "the x study"); });
+  BOOST_TEST(msg.find("s.toml:") != std::string::npos);
+  BOOST_TEST(msg.find("[[feed]] #1") != std::string::npos);
+  BOOST_TEST(msg.find("the x study does not run") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_distribution_sizes_the_run) {

@@ -185,6 +185,7 @@ int main(int argc, char** argv) try {
     else path = a;
   }
   const Scene s = load_scene(path, overrides);
+  refuse_feeds(s, "the hopper study");
   if (!s.all_spheres()) throw SceneError(path + ": the hopper study takes spheres only");
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the hopper study runs in double: precision = \"double\"");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());

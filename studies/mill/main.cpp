@@ -201,6 +201,7 @@ int main(int argc, char** argv) try {
     else path = a;
   }
   const Scene s = load_scene(path, overrides);
+  refuse_feeds(s, "the mill study");
   if (!s.all_spheres()) throw SceneError(path + ": the mill study takes spheres only");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   check_run_fits_here(s);

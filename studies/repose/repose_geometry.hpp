@@ -28,6 +28,7 @@
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/sim/repose_angle.hpp"
+#include "pipeline/scene_params.hpp"
 
 namespace blaze {
 
@@ -155,6 +156,7 @@ inline ReposeSetup derive_repose(const std::string& path, const std::vector<std:
 
   ReposeSetup g;
   g.scene = parse_scene(text.str() + walls, path, all);
+  refuse_feeds(g.scene, "the repose study");
   g.d = d, g.r_in = Rin, g.outlet_y = yo, g.particles = layers * per_layer;
   g.derived = {{"base_circumradius_m", Rb}, {"base_inscribed_radius_m", Rin}, {"outlet_side_m", D},
                {"outlet_height_m", yo}, {"funnel_top_height_m", yf}, {"funnel_top_side_m", W},
