@@ -183,7 +183,8 @@ class SetupProgress {
   clock::time_point last_;
 };
 
-inline Quat<double> random_orientation(std::mt19937_64& rng) {
+template <class Rng>
+Quat<double> random_orientation(Rng& rng) {
   std::normal_distribution<double> g;
   return normalized(Quat<double>{g(rng), g(rng), g(rng), g(rng)});
 }
