@@ -247,6 +247,16 @@ fig-repose-liggghts: deps
 	gnuplot -e "dir='data/repose'; size='small'" plots/repose.gp
 	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
 
+# ---- hopper discharge (studies/hopper) -------------------------------------------------------------
+# make fig-2.15 / fig-2.16: the hopper of thesis section 2.5.3 with 2000 spheres and 2000 dodecahedra,
+# poured by a feeder and discharged, three seeds each (HOPPER_SEEDS) -> data/hopper/pizette/,
+# studies/hopper/pizette.md, plots/fig-2.15.png, plots/fig-2.16.png (tools/hopper_pizette.sh;
+# ~30 minutes on 2 CPU cores, most of it the dodecahedra).
+.PHONY: fig-2.15 fig-2.16
+fig-2.15 fig-2.16: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
+	tools/hopper_pizette.sh $(BUILD)/$(RUN_BACKEND)/study_hopper
+
 # ---- tumbling mills (studies/mill) ---------------------------------------------------------------
 # make table-4.4: the thesis's Table 4.4 (3D lab mill: 20% and 30% filling, 14/22/32 rpm) with the
 # history-free law and Hertz-Mindlin -> data/mill/table-4.4/, studies/mill/table-4.4.md,

@@ -27,6 +27,7 @@
 // the delivered sizes (for the Kolmogorov-Smirnov distance, SizeDistribution::ks_distance).
 #pragma once
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -132,6 +133,7 @@ class Feeder {
   // The insertion at the simulation's current step: places what is due, inserts it.
   template <class Sim>
   void feed(Sim& sim) {
+    const auto started = std::chrono::steady_clock::now();
     // up to the next insertion, or to the end when there is none (in whole steps, as inserts_at
     // counts: the last insertion owes all that is due by the end)
     const std::uint64_t next = sim.steps() + every_;
@@ -206,8 +208,15 @@ class Feeder {
                                            : (spec_.mass_rate * span - mass_) / mass_of(pending_.front());
     shortfall_now_ = left_due >= 1 ? static_cast<long>(left_due) : 0;
     if (shortfall_now_ > 0) ++short_insertions_;
+    const auto placed_at = std::chrono::steady_clock::now();
     sim.insert(batch);
+    place_seconds_ += std::chrono::duration<double>(placed_at - started).count();
+    insert_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - placed_at).count();
   }
+  // Wall time so far (s) in finding the particles present and placing (the host's part), and in
+  // Simulation::insert (appending to the store and re-sorting).
+  double place_seconds() const { return place_seconds_; }
+  double insert_seconds() const { return insert_seconds_; }
 
   long inserted() const { return inserted_; }
   double inserted_mass() const { return mass_; }
@@ -363,6 +372,7 @@ class Feeder {
   static inline const std::string kLayout2 = "feeder2\n";
   static constexpr std::uint64_t kVelocityStream = 0x5be1d0c7a3e8f2b1ull;  // its key, with the feed's seed
   long shortfall_now_ = 0, short_insertions_ = 0;
+  double place_seconds_ = 0, insert_seconds_ = 0;  // not state: timing of this process
   std::vector<double> delivered_;  // m, every delivered radius (polyhedra: the bounding radius)
 };
 

@@ -276,9 +276,13 @@ int run_scene(const Scene& s, const Options& o) {
   std::printf("  steps %.3f s (%.4g particle-steps/s), output %.3f s (%.0f%%); %llu neighbour-list builds (every %.3g steps)\n",
               stepping, stepping > 0 ? particle_steps / stepping : 0.0, output_seconds, wall > 0 ? 100 * output_seconds / wall : 0.0,
               static_cast<unsigned long long>(builds), builds ? static_cast<double>(taken) / static_cast<double>(builds) : 0.0);
-  if (!feeders.empty())
-    std::printf("  feeding %.3f s (%.2g%% of the steps' time): placing, inserting and re-sorting\n", feed_seconds,
-                stepping > 0 ? 100 * feed_seconds / stepping : 0.0);
+  if (!feeders.empty()) {
+    double place = 0, insert = 0;
+    for (const auto& f : feeders) place += f.place_seconds(), insert += f.insert_seconds();
+    std::printf("  feeding %.3f s (%.2g%% of the steps' time): placing %.3f s (finding the particles present, drawing and "
+                "testing centres), inserting %.3f s (appending and re-sorting)\n", feed_seconds,
+                stepping > 0 ? 100 * feed_seconds / stepping : 0.0, place, insert);
+  }
   if (o.phases && taken > 0) {  // per step, GPU time on the GPU (phase_timer.hpp)
     std::printf("  phases, ms per step:");
     for (const auto& [phase, seconds] : sim.timer().seconds())

@@ -1,12 +1,14 @@
-// Hopper discharge study (default `make run`), driven by a scene file:
+// Hopper discharge study (default `make run`; make fig-2.15 / fig-2.16), driven by a scene file:
 //   study_hopper [SCENE.toml] [--set key=value]...      (default studies/hopper/hopper.toml)
-// Beads poured into a flat-bottomed hopper settle behind the wall named "gate"; at [study]
-// gate_open_time the gate is removed (a timed event of the one run: the contacts keep their
-// history across it) and the bed drains through the orifice. Particles that fall
-// below the hopper leave the domain: they are removed and counted, and that count is the
-// discharge. Times are reported from the opening (negative while settling). Writes
-// <output directory>/{timeseries.csv, manifest.txt, vtu/*.vtu, particles.pvd, walls.vtu} and
-// plots/hopper.png. The scene chooses the law (linear or Hertz); the study runs in double.
+// Spheres or polyhedra, placed at the start or poured by the scene's [[feed]]s, settle behind the
+// wall named "gate"; at [study] gate_open_time the gate is removed (a timed event of the one run:
+// the contacts keep their history across it) and the bed drains through the orifice. Particles
+// that fall below the hopper leave the domain: they are removed and counted, and that count is the
+// discharge. Times are reported from the opening (negative while settling). Writes <output
+// directory>/{timeseries.csv, discharge.csv (each particle's place at the opening and exit time),
+// manifest.txt (with the flow rate, residual and flow pattern: discharge_record.hpp),
+// vtu/*.vtu, particles.pvd, walls.vtu} and plots/hopper.png. The scene chooses the law (linear or
+// Hertz); the study runs in double.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +20,7 @@
 #include <gnuplot-iostream.h>
 #define BLAZE_HAVE_GNUPLOT 1
 #endif
+#include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/exec/device_info.hpp"
 #include "blaze/io/manifest.hpp"
@@ -27,9 +30,11 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
+#include "pipeline/feeder.hpp"
 #include "pipeline/scene_params.hpp"
 #include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
+#include "studies/hopper/discharge_record.hpp"
 
 using namespace blaze;
 using Real = double;
@@ -64,17 +69,27 @@ World<Real> without_gate(Scene s) {
   return build_world<Real>(s);
 }
 
-template <class Law>
+template <class Law, class Shape>
 int run(const Scene& s, const std::vector<std::string>& overrides) {
-  using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+  constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
+  using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
   const double gate_open = s.study_value("gate_open_time", 0, s.end_time, "s (at most end_time)");
+  const double orifice = s.study_value_or("orifice_half_width", 0, 10, "m (the flow pattern's centre column)", 0.025);
+  const double axis_x = s.study_value_or("orifice_x", -1e3, 1e3, "m (the orifice's centre line)", 0.0);
   s.check_study_used();
-  const SimulationParams<Real> sp = simulation_params<Real>(s);
-  const PairTable<Law> laws = build_laws<Law>(s);
-  const ParticleState<Real> initial = build_particles<Real>(s, nullptr);
-  std::printf("hopper: %zu spheres, dt = %.3g s (%.3f of the critical step %.3g s), impact overlap %.3g%% of the radius\n",
-              initial.size(), s.dt, s.dt / s.dt_critical, s.dt_critical, 100 * s.impact_overlap);
+  const SimulationParams<Real> sp = simulation_params<Real>(s, polyhedra);
+  Shape shape;
+  std::vector<ConvexShape> shapes;
+  const PolyhedronTable<Real>* table = nullptr;
+  if constexpr (polyhedra) shapes = build_shapes(s), shape.table = build_shape_table<Real>(s, shapes), table = &shape.table;
+  const ParticleState<Real> initial = build_particles<Real>(s, table);
+  std::printf("hopper: %zu particles (%s) placed, %zu feeds, dt = %.3g s (%.3f of the critical step %.3g s), impact overlap %.3g%% of the "
+              "radius\n", initial.size(), Shape::name, s.feeds.size(), s.dt, s.dt / s.dt_critical, s.dt_critical, 100 * s.impact_overlap);
   std::printf("backend: %s, %s\n", DefaultSpace::name, device_name(DefaultSpace{}).c_str());
+  // One run: the gate is removed at gate_open_time (a timed event), the contacts keep their state.
+  Sim sim(sp, build_laws<Law>(s), build_world<Real>(with_wall_removed_at(s, "gate", gate_open)), initial, shape);
+  std::vector<Feeder<Real>> feeders;
+  for (std::size_t k = 0; k < s.feeds.size(); ++k) feeders.emplace_back(s, k, table);
 
   const std::string dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
@@ -93,60 +108,67 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   };
   const std::uint64_t csv_every = every(s.output.csv_interval > 0 ? s.output.csv_interval : s.end_time / 100);
   const std::uint64_t vtu_every = every(s.output.vtu_interval > 0 ? s.output.vtu_interval : s.end_time / 10);
-  const auto wall_start = std::chrono::steady_clock::now();
-
-  // Runs steps [k0, k1) of the whole run, writing rows and frames on the way.
-  // count0, mass0: what had left the domain when the gate opened (the discharge counts from there).
-  auto run_phase = [&](Sim& sim, std::uint64_t k0, std::uint64_t k1, Index count0, double mass0, bool last) {
-    for (std::uint64_t k = k0; k < k1 || (last && k == k1);) {
-      const double t = static_cast<double>(k) * s.dt - gate_open;
-      const bool end = last && k == k1, csv_due = k % csv_every == 0 || end, vtu_due = k % vtu_every == 0 || end;
-      if (csv_due || vtu_due) {
-        const auto st = sim.state();
-        if (csv_due) {
-          const auto en = energies(st, sp.gravity);
-          const PenetrationReport pen = sim.take_penetration(s.output.penetration_warning);
-          const ContactEnergy stored = sim.contact_energy();
-          over_limit += pen.over;
-          worst_penetration = std::max(worst_penetration, static_cast<double>(pen.worst));
-          csv << t << ',' << sim.removed_mass() - mass0 << ',' << sim.removed_count() - count0 << ',' << st.size() << ','
-              << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << ','
-              << stored.total() << ',' << stored.wall_contacts << '\n';
-        }
-        if (vtu_due) {
-          char name[64];
-          std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
-          write_particles_vtu(dir + "/" + name, st);
-          pvd.add(t, name);
-          std::printf("  t = %6.3f s  in hopper %6zu  discharged %6d (%.3f kg)\n", t, st.size(),
-                      static_cast<int>(sim.removed_count() - count0), sim.removed_mass() - mass0);
-          std::fflush(stdout);
-        }
-      }
-      if (k == k1) break;
-      // Up to the next row or frame in one stretch (the GPU batches it: Simulation::run).
-      const std::uint64_t next = next_event(k, k1, {csv_every, vtu_every});
-      sim.run(next - k);
-      particle_steps += static_cast<std::uint64_t>(sim.size()) * (next - k);
-      k = next;
-    }
-    return sim.state();
-  };
-
   const auto k_open = static_cast<std::uint64_t>(std::llround(gate_open / s.dt));
   const auto k_end = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));
-  // One run: the gate is removed at gate_open_time (a timed event), the contacts keep their state.
-  Sim sim(sp, laws, build_world<Real>(with_wall_removed_at(s, "gate", gate_open)), initial);
-  run_phase(sim, 0, k_open, 0, 0.0, false);
-  const Index count0 = sim.removed_count();
-  const double mass0 = sim.removed_mass();
-  if (count0 > 0) std::printf("WARNING: %d particles left the domain while the gate was closed\n", static_cast<int>(count0));
-  const auto final_state = run_phase(sim, k_open, k_end, count0, mass0, true);
+  const auto wall_start = std::chrono::steady_clock::now();
+  hopper::DischargeRecord record;
+  Index count0 = 0;  // what had left the domain when the gate opened (the discharge counts from there)
+  double mass0 = 0;
+  for (std::uint64_t k = 0;; ) {
+    const double t = static_cast<double>(k) * s.dt - gate_open;
+    if (k == k_open) {
+      count0 = sim.removed_count(), mass0 = sim.removed_mass();
+      if (count0 > 0) std::printf("WARNING: %d particles left the domain while the gate was closed\n", static_cast<int>(count0));
+      for (const auto& f : feeders)
+        if (f.next_insertion(k) != ~std::uint64_t{0}) std::printf("WARNING: feed %s still feeds after the gate opens\n", f.spec().name.c_str());
+      record.open(sim.state(), axis_x);
+    }
+    const bool end = k == k_end, csv_due = k % csv_every == 0 || end, vtu_due = k % vtu_every == 0 || end;
+    if (csv_due || vtu_due) {
+      const auto st = sim.state();
+      if (csv_due) {
+        const auto en = energies(st, sp.gravity);
+        const PenetrationReport pen = sim.take_penetration(s.output.penetration_warning);
+        const ContactEnergy stored = sim.contact_energy();
+        over_limit += pen.over;
+        worst_penetration = std::max(worst_penetration, static_cast<double>(pen.worst));
+        csv << t << ',' << sim.removed_mass() - mass0 << ',' << sim.removed_count() - count0 << ',' << st.size() << ','
+            << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << ',' << stored.total() << ','
+            << stored.wall_contacts << '\n';
+        if (k >= k_open) record.sample(t, st);
+      }
+      if (vtu_due) {
+        char name[64];
+        std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", frame++);
+        if constexpr (polyhedra) write_polyhedra_vtu(dir + "/" + name, st, shapes);
+        else write_particles_vtu(dir + "/" + name, st);
+        pvd.add(t, name);
+        std::printf("  t = %6.3f s  in hopper %6zu  discharged %6d (%.3f kg)\n", t, st.size(),
+                    static_cast<int>(sim.removed_count() - count0), sim.removed_mass() - mass0);
+      }
+    }
+    if (end) break;
+    for (auto& f : feeders)
+      if (f.inserts_at(k)) f.feed(sim);
+    // Up to the next row, frame, insertion or the opening in one stretch (the GPU batches it).
+    std::uint64_t next = next_event(k, k_end, {csv_every, vtu_every});
+    if (k < k_open) next = std::min(next, k_open);
+    for (const auto& f : feeders) next = std::min(next, f.next_insertion(k + 1));
+    sim.run(next - k);
+    particle_steps += static_cast<std::uint64_t>(sim.size()) * (next - k);
+    k = next;
+  }
   csv.close();
 
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  std::printf("discharged %d of %zu spheres (%.3f kg) in %.2f s; %zu remain\n", static_cast<int>(sim.removed_count() - count0),
-              initial.size(), sim.removed_mass() - mass0, s.end_time - gate_open, final_state.size());
+  const hopper::DischargeSummary d = record.summary(orifice);
+  record.write_csv(dir + "/discharge.csv");
+  std::printf("discharged %zu of %zu particles (%s; %.3f kg) in %.2f s; %.1f%% remain in the hopper\n", d.discharged, d.particles, Shape::name,
+              sim.removed_mass() - mass0, s.end_time - gate_open, 100 * d.residual);
+  std::printf("steady mass flow rate %.4g kg/s (R^2 %.4f); median exit: top centre %.3g s, bottom sides %.3g s (%s)\n", d.flow_rate,
+              d.flow_r2, d.t_top_centre, d.t_bottom_side, d.funnel() ? "funnel flow" : "not funnel flow");
+  for (const auto& f : feeders)
+    std::printf("feed %s: %ld inserted, %ld due not placed\n", f.spec().name.c_str(), f.inserted(), f.undelivered());
   std::printf("deepest penetration %.3g%% of the radius; %ld particle-samples over %.3g%%\n", 100 * worst_penetration,
               over_limit, 100 * s.output.penetration_warning);
   std::printf("wall time %.1f s, %.3g particle-steps/s\n", wall, static_cast<double>(particle_steps) / wall);
@@ -159,16 +181,26 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   manifest["date"] = utc_date();
   manifest["backend"] = DefaultSpace::name;
   manifest["device"] = device_name(DefaultSpace{});
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", s.dt);
-  manifest["dt_s"] = buf;
-  std::snprintf(buf, sizeof buf, "%.3f", wall);
-  manifest["wall_time_s"] = buf;
-  manifest["discharged_count"] = std::to_string(sim.removed_count() - count0);
+  manifest["shape"] = Shape::name;
+  auto put = [&](const char* key, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    manifest[key] = buf;
+  };
+  put("dt_s", s.dt);
+  put("wall_time_s", wall);
+  manifest["particles_at_opening"] = std::to_string(d.particles);
+  manifest["discharged_count"] = std::to_string(d.discharged);
+  put("residual_fraction", d.residual);
+  put("flow_rate_kg_s", d.flow_rate);
+  put("flow_fit_r2", d.flow_r2);
+  put("exit_top_centre_s", d.t_top_centre);
+  put("exit_bottom_sides_s", d.t_bottom_side);
+  manifest["funnel_flow"] = d.funnel() ? "yes" : "no";
   write_manifest(dir + "/manifest.txt", manifest);
   const bool plotted = plot(dir + "/timeseries.csv", "plots/hopper.png");
-  std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)%s\n", dir.c_str(), dir.c_str(), frame,
-              plotted ? ", plots/hopper.png" : "");
+  std::printf("wrote %s/timeseries.csv, %s/discharge.csv, %s/particles.pvd (%d frames)%s\n", dir.c_str(), dir.c_str(), dir.c_str(),
+              frame, plotted ? ", plots/hopper.png" : "");
   return 0;
 }
 
@@ -185,12 +217,13 @@ int main(int argc, char** argv) try {
     else path = a;
   }
   const Scene s = load_scene(path, overrides);
-  refuse_feeds(s, "the hopper study");
-  if (!s.all_spheres()) throw SceneError(path + ": the hopper study takes spheres only");
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the hopper study runs in double: precision = \"double\"");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   check_run_fits_here(s);
-  return s.law == LawKind::linear ? run<LinearLaw<Real>>(s, overrides) : run<HertzLaw<Real>>(s, overrides);
+  if (s.all_spheres())
+    return s.law == LawKind::linear ? run<LinearLaw<Real>, SphereShape>(s, overrides) : run<HertzLaw<Real>, SphereShape>(s, overrides);
+  return s.law == LawKind::linear ? run<LinearLaw<Real>, PolyhedronShape<Real>>(s, overrides)
+                                  : run<HertzLaw<Real>, PolyhedronShape<Real>>(s, overrides);
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());
   return 1;

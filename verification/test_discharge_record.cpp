@@ -1,0 +1,90 @@
+// The hopper study's discharge measures (studies/hopper/discharge_record.hpp), on synthetic beds
+// whose answers are known, over several rates, bed sizes and sampling intervals:
+// - particles leaving at a constant rate give that mass flow rate (to the sampling's rounding)
+//   with R^2 = 1, and the residual is the fraction never sampled as gone;
+// - a bed draining from its centre column down (exit time growing with the distance from the axis,
+//   falling with height: funnel flow) is called funnel flow; one descending as a whole (the bottom
+//   layer first, whatever its x: mass flow) is not.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include "blaze/particles/particle_state.hpp"
+#include "studies/hopper/discharge_record.hpp"
+
+using namespace blaze;
+
+namespace {
+
+// A bed of nx x ny spheres (d = 10 mm) in the x-y plane around x = 0, ids row by row from the bottom.
+ParticleState<double> bed(int nx, int ny) {
+  ParticleState<double> s;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      s.add_sphere({0.01 * (i - 0.5 * (nx - 1)), 0.005 + 0.01 * j, 0}, 0.005, 1000, 0, {0, 0, 0});
+  for (std::size_t k = 0; k < s.size(); ++k) s.id[k] = static_cast<int>(k);
+  return s;
+}
+
+// Replays a discharge: particle k leaves at exit(k) (inf: never), sampled every `dt`.
+template <class Exit>
+hopper::DischargeSummary replay(const ParticleState<double>& s, Exit exit, double dt, double t_end) {
+  hopper::DischargeRecord r;
+  r.open(s, 0.0);
+  for (double t = 0; t <= t_end + 1e-12; t += dt) {
+    ParticleState<double> left;
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (!(exit(k) <= t)) left.add_sphere(s.position[k], s.radius[k], 1000, 0, {0, 0, 0}), left.id.back() = s.id[k];
+    r.sample(t, left);
+  }
+  return r.summary(0.025);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(discharge_record)
+
+BOOST_AUTO_TEST_CASE(a_constant_rate_is_measured_and_the_residual_counted) {
+  for (const int nx : {16, 31})
+    for (const double rate : {200.0, 1000.0, 5000.0})   // particles/s
+      for (const double dt : {0.001, 0.01}) {
+        const ParticleState<double> s = bed(nx, 40);
+        const std::size_t n = s.size(), kept = n / 5;      // the last fifth never leaves
+        const auto exit = [&](std::size_t k) { return k < n - kept ? (static_cast<double>(k) + 0.5) / rate : hopper::DischargeRecord::kNever; };
+        const double t_end = static_cast<double>(n) / rate + 5 * dt;
+        const hopper::DischargeSummary d = replay(s, exit, dt, t_end);
+        const double m = static_cast<double>(s.mass[0]);
+        BOOST_TEST_CONTEXT("nx " << nx << ", rate " << rate << "/s, sampled every " << dt << " s") {
+          BOOST_TEST(d.discharged == n - kept);
+          BOOST_TEST(d.residual == static_cast<double>(kept) / static_cast<double>(n), boost::test_tools::tolerance(1e-12));
+          // a staircase sampled at dt: its least-squares slope is the rate to within one sample's particles
+          BOOST_TEST(std::fabs(d.flow_rate / (rate * m) - 1) < 0.02 + 2 * rate * dt / static_cast<double>(n));
+          BOOST_TEST(d.flow_r2 > 0.99);
+        }
+      }
+}
+
+BOOST_AUTO_TEST_CASE(funnel_flow_is_told_from_mass_flow) {
+  for (const int nx : {12, 16, 24}) {
+    const ParticleState<double> s = bed(nx, 30);
+    const double width = 0.005 * nx;
+    // funnel: the core above the orifice drains top down first, the sides later, the bottom
+    // corners never
+    const auto funnel = [&](std::size_t k) {
+      const double x = std::fabs(s.position[k].x), y = s.position[k].y;
+      if (x > 0.6 * width && y < 0.08) return hopper::DischargeRecord::kNever;
+      return x < 0.025 ? 0.5 - 1.0 * y : 0.5 + 4 * x + (0.3 - y);
+    };
+    // mass flow: the bed descends as a whole, layer by layer
+    const auto mass = [&](std::size_t k) { return 5 * s.position[k].y; };
+    BOOST_TEST_CONTEXT("nx " << nx) {
+      const hopper::DischargeSummary f = replay(s, funnel, 0.01, 3.0), m = replay(s, mass, 0.01, 3.0);
+      BOOST_TEST(f.funnel());
+      BOOST_TEST(std::isinf(f.t_bottom_side));
+      BOOST_TEST(f.residual > 0);
+      BOOST_TEST(!m.funnel());
+      BOOST_TEST(m.t_bottom_side < m.t_top_centre);
+      BOOST_TEST(m.residual == 0);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
