@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include "blaze/grid/grid_spec.hpp"
+#include "blaze/grid/periodic_images.hpp"
 #include "blaze/particles/particle_store.hpp"
 
 namespace blaze {
@@ -26,6 +27,29 @@ struct NeighbourView {
   }
   BLAZE_HD Index& at(Index k, Index i) const { return index[offset(k, i)]; }
   BLAZE_HD Index& reverse_at(Index k, Index i) const { return reverse[offset(k, i)]; }
+};
+
+// Before line 1 on a grid with periodic axes: each particle back into [lo, hi) along them, its
+// image count moved by the periods it crossed (grid/periodic_images.hpp).
+template <class Real>
+struct WrapPeriodic {
+  GridSpec<Real> grid;
+  Vec3Field<Real> position;
+  Index* image[3];
+  BLAZE_HD void operator()(Index i) const {
+    Vec3<Real> x = position.get(i);
+    Real* c[3] = {&x.x, &x.y, &x.z};
+    const Real lo[3] = {grid.lo.x, grid.lo.y, grid.lo.z}, hi[3] = {grid.hi.x, grid.hi.y, grid.hi.z};
+    const Real l[3] = {grid.length.x, grid.length.y, grid.length.z};
+    for (int d = 0; d < 3; ++d) {
+      if (!((grid.periodic >> d) & 1u) || !(*c[d] == *c[d])) continue;  // NaN: left to the guard
+      Index k = 0;
+      while (*c[d] >= hi[d]) *c[d] -= l[d], ++k;  // a particle crosses at most a few periods between builds
+      while (*c[d] < lo[d]) *c[d] += l[d], --k;
+      if (k) image[d][i] += k;
+    }
+    position.set(i, x);
+  }
 };
 
 // Line 1: key = cell hash (eq. 2.1), or the outside key for particles that left the domain.
@@ -66,30 +90,46 @@ struct BuildNeighbours {
   const std::uint32_t* end;
   Real skin;
   NeighbourView list;
+  PeriodicImages<Real> images;  // periodic axes: each entry's image code written beside it
+
+  // A neighbouring cell index along an axis of n cells: wrapped on a periodic axis, else -1 when
+  // past the grid's edge.
+  BLAZE_HD static int neighbour_cell(int c, int n, bool periodic) {
+    return c >= 0 && c < n ? c : periodic ? (c < 0 ? c + n : c - n) : -1;
+  }
 
   BLAZE_HD void operator()(Index i) const {
     const Vec3<Real> xi = position.get(i);
     const Real ri = radius[i];
     int cx = 0, cy = 0, cz = 0;
-    grid.cell_of(xi, cx, cy, cz);  // inside: outsiders were removed before the build
+    grid.cell_of(xi, cx, cy, cz);  // inside: outsiders were removed (or wrapped) before the build
     Index count = 0;
     for (int dy = -1; dy <= 1; ++dy) {
-      const int y = cy + dy;
-      if (y < 0 || y >= grid.ny) continue;
+      const int y = neighbour_cell(cy + dy, grid.ny, grid.periodic & 2u);
+      if (y < 0) continue;
       for (int dz = -1; dz <= 1; ++dz) {
-        const int z = cz + dz;
-        if (z < 0 || z >= grid.nz) continue;
+        const int z = neighbour_cell(cz + dz, grid.nz, grid.periodic & 4u);
+        if (z < 0) continue;
         for (int dx = -1; dx <= 1; ++dx) {
-          const int x = cx + dx;
-          if (x < 0 || x >= grid.nx) continue;
+          const int x = neighbour_cell(cx + dx, grid.nx, grid.periodic & 1u);
+          if (x < 0) continue;
           const std::uint32_t cell = grid.hash(x, y, z);
           const std::uint32_t s = start[cell];
           if (s == kEmptyCell) continue;
           for (std::uint32_t j = s; j < end[cell]; ++j) {
             if (static_cast<Index>(j) == i) continue;
             const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i)
-            if (norm2(position.get(static_cast<Index>(j)) - xi) < reach * reach) {
-              if (count < list.capacity) list.at(count, i) = static_cast<Index>(j);
+            Vec3<Real> d = position.get(static_cast<Index>(j)) - xi;
+            std::uint8_t code = 0;
+            if (images.code) {  // the nearest image (d -> -d from j's side: the negated code)
+              code = PeriodicImages<Real>::encode(d, images.length);
+              d = d + images.shift_of(code);
+            }
+            if (norm2(d) < reach * reach) {
+              if (count < list.capacity) {
+                list.at(count, i) = static_cast<Index>(j);
+                if (images.code) images.code[list.offset(count, i)] = code;
+              }
               ++count;
             }
           }
@@ -141,7 +181,8 @@ struct NeedsRebuild {
     if (!finite_r(x.x + x.y + x.z)) return 2;
     if (half_skin_squared < Real(0)) return 1;  // first build: no reference positions yet
     int cx, cy, cz;
-    if (!grid.cell_of(x, cx, cy, cz)) return 1;
+    // (a periodic axis does not count: a particle past it is wrapped at the next build)
+    if (grid.periodic ? !grid.inside_fixed_axes(x) : !grid.cell_of(x, cx, cy, cz)) return 1;
     if (world_step && *world_step > world_valid_until) return 1;
     return norm2(x - reference.get(i)) > half_skin_squared ? 1 : 0;
   }

@@ -42,6 +42,7 @@ struct StoredContactEnergy {
   ContactEnergySlots out;
   PairHistoryView<Real, Law::State::kReals> history;  // a tangential spring's energy is in the state
   WallHistoryView<Real, Law::State::kReals> wall_history;
+  PeriodicImages<Real> images;  // periodic axes (grid/periodic_images.hpp)
 
   BLAZE_HD void operator()(Index i) const {
     const auto bi = shape.body(p, i);
@@ -52,7 +53,9 @@ struct StoredContactEnergy {
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       if (j < i) continue;  // j's thread holds this pair
-      const ContactGeometry<Real> g = shape.collide(bi, shape.body(p, j));
+      auto bj = shape.body(p, j);
+      if (images.on()) bj.x = bj.x + images.shift(list.offset(k, i));  // j's image beside i
+      const ContactGeometry<Real> g = shape.collide(bi, bj);
       if (!g.touching) continue;
       const auto state = Law::kHistory ? history.load(list.offset(k, i)) : Law::State::zero();
       pairs += laws(mi, p.material[j]).stored_energy(g, state);

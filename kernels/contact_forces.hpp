@@ -6,6 +6,7 @@
 // the same geometry (Newton's third law holds to the last bit of the geometry).
 // A law with history (contact_state.hpp) loads each touching pair's state from i's own copy
 // (contact_history.hpp), updates it and stores it back; an open pair's state is forgotten.
+// Across a periodic boundary the pair is taken beside its lower index (grid/periodic_images.hpp).
 // With Features::statistics each particle also counts its vertex-face and edge-edge contacts;
 // with Features::monitor it keeps its deepest overlap / radius (reset by the host).
 #pragma once
@@ -27,14 +28,18 @@ struct ContactForces {
   ContactStats stats;
   PairHistoryView<Real, Law::State::kReals> history;  // i's own copy of each pair's state (contact_history.hpp)
   Real dt;
+  PeriodicImages<Real> images;  // periodic axes: the pair in its lower index's frame (periodic_images.hpp)
 
   BLAZE_HD void operator()(Index i) const {
-    const auto a = pair_side<Features>(shape, p, i);
+    const auto side = pair_side<Features>(shape, p, i);
     ContactSums<Real, Features> sums;
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
-      const auto bj = shape.body(p, j);
+      const std::size_t s = list.offset(k, i);
+      auto bj = shape.body(p, j);
+      auto a = side;
+      images.place(s, i, j, a.body.x, bj.x);
       decltype(shape.collide(a.body, bj)) g;  // ContactGeometry, or PatchGeometry (contact_patch.hpp)
       if (i < j) {
         g = shape.collide(a.body, bj);
@@ -42,7 +47,6 @@ struct ContactForces {
         g = shape.collide(bj, a.body);
         g.normal = -g.normal;
       }
-      const std::size_t s = list.offset(k, i);
       if (!g.touching) {
         if constexpr (Law::kHistory) history.forget(s);
         continue;

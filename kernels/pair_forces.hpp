@@ -51,6 +51,7 @@ struct PairForces {
   PairSlots<Real> slots;
   PairHistoryView<Real, Law::State::kReals> history;  // the lower index's copy (contact_history.hpp)
   Real dt;
+  PeriodicImages<Real> images;  // periodic axes: j's image beside i (grid/periodic_images.hpp)
 
   BLAZE_HD void operator()(Index i) const {
     const auto a = pair_side<Features>(shape, p, i);
@@ -60,7 +61,8 @@ struct PairForces {
       const Index j = list.at(k, i);
       if (j < i) continue;  // j's kernel thread evaluates this pair
       const std::size_t s = list.offset(k, i);
-      const auto bj = shape.body(p, j);
+      auto bj = shape.body(p, j);
+      if (images.on()) bj.x = bj.x + images.shift(s);
       const auto g = shape.collide(a.body, bj);
       if (!g.touching) {
         slots.state[s] = 0;
@@ -89,6 +91,7 @@ struct GatherPairForces {
   NeighbourView list;
   PairSlots<Real> slots;
   ContactStats stats;
+  PeriodicImages<Real> images;  // periodic axes: a slot of j's holds the point beside j's image of i
 
   BLAZE_HD void operator()(Index i) const {
     const Vec3<Real> xi = p.position.get(i);
@@ -102,7 +105,10 @@ struct GatherPairForces {
       if (state == 0) continue;
       sums.touch(state == 2, Features::monitor ? slots.overlap[s] : Real(0));
       const Vec3<Real> fs = slots.get(slots.force, s);
-      const Vec3<Real> r = Features::rotation ? slots.get(slots.point, s) - xi : Vec3<Real>{0, 0, 0};
+      // the point of a slot of j's lies beside j: i's arm from its image there, x_i - s (s: entry (k, i)'s
+      // shift of j), rounded as ContactForces rounds it
+      const Vec3<Real> at = !own && images.on() ? xi - images.shift(list.offset(k, i)) : xi;
+      const Vec3<Real> r = Features::rotation ? slots.get(slots.point, s) - at : Vec3<Real>{0, 0, 0};
       if constexpr (Patches && Features::rotation) {
         const Vec3<Real> ms = slots.get(slots.moment, s);
         sums.add(own ? fs : -fs, r, own ? ms : -ms);

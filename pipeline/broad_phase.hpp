@@ -2,7 +2,8 @@
 // arrays reordered (thesis section 2.2.3: sorting gave it 32x), cell start/end, and a Verlet
 // neighbour list with a skin, rebuilt when any particle has moved more than half the skin since
 // the last build or has left the domain. Particles outside the domain at a rebuild are sorted to
-// the end, counted, their mass summed, and dropped.
+// the end, counted, their mass summed, and dropped. Along periodic axes particles are wrapped back
+// into the box first (grid/periodic_images.hpp), and the list keeps each entry's image.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -62,6 +63,8 @@ class BroadPhase {
     keys_.resize(std::max<std::size_t>(keys_.size(), n));
     order_.resize(std::max<std::size_t>(order_.size(), n));
     timer.time("hash", [&] {
+      if (grid_.periodic)  // back into the box along the periodic axes, counting the images
+        for_each(Space{}, n, WrapPeriodic<Real>{grid_, store.view().position, {store.image(0), store.image(1), store.image(2)}});
       for_each(Space{}, n, HashParticles<Real>{grid_, store.view().position, keys_.data(), order_.data()});
     });
     timer.time("sort", [&] { sorter_.sort_pairs(keys_.data(), order_.data(), n, end_bit_); });
@@ -103,6 +106,7 @@ class BroadPhase {
   // Device memory held by the broad phase (grid cells, sort buffers, neighbour list), bytes.
   std::size_t bytes() const {
     std::size_t b = (keys_.size() + cell_start_.size() + cell_end_.size()) * sizeof(std::uint32_t);
+    b += images_.size();
     b += (order_.size() + list_.size() + count_.size() + reverse_.size() + previous_list_.size() + previous_count_.size()) *
          sizeof(Index);
     for (const auto& c : reference_) b += c.size() * sizeof(Real);
@@ -111,6 +115,10 @@ class BroadPhase {
 
   NeighbourView neighbours() {
     return {list_.data(), count_.data(), stride_, capacity_, with_reverse_ ? reverse_.data() : nullptr};
+  }
+  // The list entries' image codes (grid/periodic_images.hpp); off without periodic axes.
+  PeriodicImages<Real> images() {
+    return grid_.periodic ? PeriodicImages<Real>{images_.data(), grid_.length} : PeriodicImages<Real>{};
   }
 
   // Keep the list's reverse index from the next build on (pairs evaluated once).
@@ -138,9 +146,10 @@ class BroadPhase {
     count_.resize(std::max<std::size_t>(count_.size(), p.n));
     for (;;) {
       list_.resize(std::max<std::size_t>(list_.size(), static_cast<std::size_t>(capacity_) * p.n));
+      if (grid_.periodic) images_.resize(std::max(images_.size(), list_.size()));
       for_each(Space{}, p.n,
                BuildNeighbours<Real>{grid_, p.position, p.radius, cell_start_.data(), cell_end_.data(), skin_,
-                                     neighbours()});
+                                     neighbours(), images()});
       const Index most = reduce_max(Space{}, p.n, ValueOf<Index>{count_.data()}, 0);
       if (most <= capacity_) break;
       capacity_ = most + most / 4 + 1;  // grow with headroom, rebuild
@@ -163,6 +172,7 @@ class BroadPhase {
   Buffer<Index, Space> order_;
   Buffer<std::uint32_t, Space> cell_start_, cell_end_;
   Buffer<Index, Space> list_, count_, reverse_, previous_list_, previous_count_;
+  Buffer<std::uint8_t, Space> images_;  // periodic axes: each list entry's image code
   bool with_reverse_ = false, with_previous_ = false;
   Index previous_stride_ = 0, previous_capacity_ = 0;
   Buffer<Real, Space> reference_[3];

@@ -24,6 +24,7 @@ SimulationParams<Real> simulation_params(const Scene& s, bool pairs_once = false
                                                                                                               : WorldLists::automatic;
   // every type's size, the feeds' derived extremes among them: the grid holds what they insert
   p.max_radius = static_cast<Real>(r_max);
+  p.periodic = s.periodic;
   return p;
 }
 

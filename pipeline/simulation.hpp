@@ -58,6 +58,9 @@ struct SimulationParams {
   // pipeline/feeder.hpp) may be larger than the first ones, and the grid's cell is sized for it.
   // 0: the initial particles' largest (a run that starts empty must give it).
   Real max_radius = 0;
+  // Periodic axes (bit 0: x, 1: y, 2: z; grid/periodic_images.hpp): the domain wraps around there,
+  // its length the period (at least 3 cells of 2 max_radius + skin).
+  unsigned periodic = 0;
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
@@ -121,6 +124,7 @@ class Simulation {
     check_meshes(world);
     store_.upload(particles, Integrator::keeps_previous_forces, Features::monitor, world.dynamic() || params.energy_ledger,
                   Features::thesis_power);  // checks the lengths
+    if (params.periodic) store_.keep_images();
     check_finite(particles, 0);
     world_.upload(world, 0, static_cast<double>(params.dt), mesh_reach(params, r_max_));
     lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
@@ -152,6 +156,7 @@ class Simulation {
     check_meshes(world);
     store_.restore(snap.store);
     store_.keep_fields(Integrator::keeps_previous_forces, Features::monitor);
+    if (params.periodic) store_.keep_images();
     steps_ = snap.steps;
     world_.upload(world, steps_, static_cast<double>(params.dt), mesh_reach(params, r_max_));
     lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
@@ -217,6 +222,19 @@ class Simulation {
   bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
 
   ParticleState<Real> state() const { return state_of(store_); }
+  // Periodic axes: the unwrapped positions x + image L (m) of `s`, which is state() now (grid/
+  // periodic_images.hpp), continuous across the boundary; empty without periodic axes.
+  std::vector<Vec3<double>> unwrapped_positions(const ParticleState<Real>& s) const {
+    const std::vector<Index> image = store_.download_images();
+    std::vector<Vec3<double>> out;
+    if (image.empty()) return out;
+    if (image.size() != 3 * s.size()) throw std::invalid_argument("simulation: unwrapped_positions() takes the state of now");
+    const Vec3<double> l = vec_cast<double>(broad_.grid().length);
+    out.resize(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+      out[i] = vec_cast<double>(s.position[i]) + Vec3<double>{image[3 * i] * l.x, image[3 * i + 1] * l.y, image[3 * i + 2] * l.z};
+    return out;
+  }
 
   // Contacts counted in the last force evaluation, by kind (each pair once); needs
   // Features::statistics.
@@ -433,7 +451,7 @@ class Simulation {
   }
   static GridSpec<Real> make_grid(const SimulationParams<Real>& prm, Real r_max) {
     if (!(r_max > 0)) throw std::invalid_argument("simulation: no particles and no max_radius (a run that starts empty sizes its grid by SimulationParams::max_radius)");
-    return GridSpec<Real>::make(prm.domain_lo, prm.domain_hi, Real(2) * r_max + prm.skin);
+    return GridSpec<Real>::make(prm.domain_lo, prm.domain_hi, Real(2) * r_max + prm.skin, prm.periodic);
   }
 
   static void check_materials(const PairTable<Law>& laws, const World<Real>& world, const ParticleState<Real>& s) {
@@ -483,8 +501,8 @@ class Simulation {
         kernel_phase("integrate", integrate<Stage::pre_force>()),
         check_phase("rebuild-check", broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until())),
         kernel_phase("contacts", contact_forces(history_dt), !once),
-        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt}, once),
-        kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats()}, once),
+        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt, broad_.images()}, once),
+        kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats(), broad_.images()}, once),
         kernel_phase("walls", world_forces(history_dt), !world_.empty()),
         kernel_phase("integrate", integrate<Stage::post_force>()));
     static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");
@@ -622,7 +640,7 @@ class Simulation {
       energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
       const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
       for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), lists_.attach(world_.view()), laws_,
-                                                           slots, contacts_.pairs(), contacts_.walls()});
+                                                           slots, contacts_.pairs(), contacts_.walls(), broad_.images()});
       f.pair_energy = energy_pairs_.data(), f.wall_energy = energy_walls_.data(), f.wall_contacts = energy_wall_contacts_.data();
     }
     if constexpr (Features::statistics)
@@ -649,7 +667,7 @@ class Simulation {
     return {nullptr, nullptr};
   }
   ContactForces<Shape, Law, Kinematics, Features> contact_forces(Real history_dt) {
-    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), history_dt};
+    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), history_dt, broad_.images()};
   }
   WorldForces<Shape, Law, Kinematics, Features> world_forces(Real history_dt) {
     return {shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), history_dt};

@@ -408,7 +408,7 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
                                         "domain_lo", "domain_hi", "skin", "pair_evaluation", "world_lists", "force_dt", "max_impact_speed", "seed",
-                                        "force_long_run", "tangential", "rolling"});
+                                        "force_long_run", "tangential", "rolling", "periodic"});
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
   s.tangential = static_cast<TangentialKind>(f.choice("tangential", {"history_free", "mindlin", "linear_spring"}, 0));
   if (s.tangential == TangentialKind::mindlin && s.law != LawKind::hertz)
@@ -438,6 +438,17 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
   if (!(s.domain_hi.x > s.domain_lo.x && s.domain_hi.y > s.domain_lo.y && s.domain_hi.z > s.domain_lo.z))
     f.fail(*f.get("domain_hi"), "domain_hi", "must exceed domain_lo in x, y and z");
   s.skin = f.number_or("skin", 0.2, {0, 10, false, false, "x largest bounding radius"});
+  if (const toml::node* n = f.get("periodic")) {  // periodic = ["x", "z"] (grid/periodic_images.hpp)
+    const std::string allowed = "an array of distinct axes among \"x\", \"y\", \"z\" (e.g. periodic = [\"x\"])";
+    if (!n->is_array()) f.fail(*n, "periodic", allowed);
+    for (const auto& e : *n->as_array()) {
+      const auto* a = e.as_string();
+      const std::string axis = a ? a->get() : "";
+      const unsigned bit = axis == "x" ? 1u : axis == "y" ? 2u : axis == "z" ? 4u : 0u;
+      if (!bit || (s.periodic & bit)) f.fail(e, "periodic", allowed);
+      s.periodic |= bit;
+    }
+  }
   s.pair_evaluation = static_cast<PairsKind>(f.choice("pair_evaluation", {"auto", "both_sides", "once"}, 0));
   s.world_lists = static_cast<WorldListsKind>(f.choice("world_lists", {"auto", "on", "off"}, 0));
   s.force_dt = f.boolean_or("force_dt", false);
@@ -1180,6 +1191,15 @@ void check_sizes(Scene& s) {
                   z.cells[0], z.cells[1], z.cells[2], z.cells_total, z.cell);
     throw SceneError(s.place("simulation.domain_hi") + " = " + shown_vec(s.domain_hi) + msg);
   }
+  for (int d = 0; d < 3; ++d)
+    if (((s.periodic >> d) & 1u) && z.cells[d] < 3) {
+      const double length = d == 0 ? s.domain_hi.x - s.domain_lo.x : d == 1 ? s.domain_hi.y - s.domain_lo.y : s.domain_hi.z - s.domain_lo.z;
+      char msg[320];
+      std::snprintf(msg, sizeof msg, ": the domain along %c is %.4g m, less than 3 cells of 2 r_max + skin = %.4g m: a particle "
+                    "would meet two images of another. Give a period of at least %.4g m along %c, or lower skin",
+                    "xyz"[d], length, z.cell, 3 * z.cell, "xyz"[d]);
+      throw SceneError(s.place("simulation.periodic") + msg);
+    }
   const char* dt_key = s.steps_per_contact > 0 ? "simulation.steps_per_contact" : "simulation.dt";
   if (s.end_time < s.dt)
     throw SceneError(s.place("simulation.end_time") + " = " + Scene::shortest(s.end_time) + ": shorter than one time step (dt = " +

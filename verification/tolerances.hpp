@@ -568,4 +568,17 @@ constexpr double feed_energy_balance = 1e-2;
 // issue's floor 0.55 (frictional spheres settle at 0.55-0.60, Onoda & Liniger 1990).
 constexpr double feed_poured_fraction = 0.55;
 
+// --- periodic boundaries (issue 20; grid/periodic_images.hpp) ---
+// A pair across the boundary against the same pair in an open box: the periodic run adds and
+// subtracts the period (L = 20 r) once per evaluation, so positions part by rounding, ~1e-16 L per
+// step, growing through the contact's sensitivity; over the few hundred steps of a collision
+// 1e-9 of the radius (and of the speed scale) leaves room for that and catches any real slip
+// (a lost tangential spring moves the spins by ~1e-2 of their scale).
+constexpr double periodic_pair_over_radius = 1e-9;
+// Total momentum of a periodic gas: each pair's two forces are exact negations (both evaluated
+// in the lower index's frame), so only the summation over particles rounds: ~1e-16 per step of
+// sum m |v|; 2000 steps of 300 particles measured 1e-15. A contact missed or doubled across the
+// boundary changes it at the first collision there (~1e-2).
+constexpr double periodic_momentum = 1e-12;
+
 }  // namespace blaze::tol

@@ -207,11 +207,12 @@ int run_scene(const Scene& s, const Options& o) {
     }
     if (write_vtu) {  // in the background; the .pvd names a frame once it is written
       const auto st = std::make_shared<const ParticleState<Real>>(sim.state());
+      const auto unwrapped = std::make_shared<const std::vector<Vec3<double>>>(sim.unwrapped_positions(*st));
       const auto walls = pvd_walls ? std::make_shared<const World<Real>>(placed(world, sim.world_poses())) : nullptr;
-      frames.start([&, st, walls, f = frame++, t = sim.time()] {
+      frames.start([&, st, unwrapped, walls, f = frame++, t = sim.time()] {
         char name[64];
         std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
-        write_particles_vtu(dir + "/" + name, *st);
+        write_particles_vtu(dir + "/" + name, *st, *unwrapped);
         pvd.add(t, name);
         if (walls) {
           std::snprintf(name, sizeof name, "vtu/walls_%04d.vtu", f);

@@ -8,10 +8,15 @@
 // Cells are at least as wide as the largest pair interaction range (2 r_max + skin), so the 27
 // cells around a particle's cell hold every particle it can touch before the next rebuild. (The
 // thesis says "the largest bound radius": with cells one radius wide, 27 cells miss pairs.)
+// Periodic axes (grid/periodic_images.hpp): the cells wrap around there, the domain's length along
+// the axis is the period, and make() asks for at least 3 cells along it, so the 27 cells around a
+// cell are distinct and a particle meets at most one image of another (the period exceeds twice
+// the interaction range).
 #pragma once
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include "blaze/core/vec3.hpp"
 
 namespace blaze {
@@ -24,11 +29,13 @@ struct GridSpec {
   Vec3<Real> hi;    // m, far corner; particles outside [lo, hi) leave the simulation
   Real inv_cell_x, inv_cell_y, inv_cell_z;  // 1/m
   int nx, ny, nz;
+  unsigned periodic = 0;        // bit 0: x, 1: y, 2: z
+  Vec3<Real> length{0, 0, 0};   // m, hi - lo along the periodic axes (the periods), 0 on the others
 
   // Smallest cells not narrower than min_cell (m) that tile the box exactly.
-  static GridSpec make(const Vec3<Real>& lo, const Vec3<Real>& hi, Real min_cell) {
+  static GridSpec make(const Vec3<Real>& lo, const Vec3<Real>& hi, Real min_cell, unsigned periodic_axes = 0) {
     if (!(min_cell > 0)) throw std::invalid_argument("grid: cell size must be > 0");
-    GridSpec g{lo, hi, 0, 0, 0, 0, 0, 0};
+    GridSpec g{lo, hi, 0, 0, 0, 0, 0, 0, periodic_axes & 7u, {0, 0, 0}};
     const Real ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
     int* dims[3] = {&g.nx, &g.ny, &g.nz};
     Real* inv[3] = {&g.inv_cell_x, &g.inv_cell_y, &g.inv_cell_z};
@@ -46,6 +53,14 @@ struct GridSpec {
       cells *= *dims[d];
     }
     if (!(cells < kMaxCells)) throw std::invalid_argument("grid: more than 4e9 cells; enlarge the cells or shrink the domain");
+    for (int d = 0; d < 3; ++d)
+      if ((g.periodic >> d) & 1u) {
+        if (*dims[d] < 3)
+          throw std::invalid_argument(std::string("grid: the periodic axis ") + "xyz"[d] + " is " + std::to_string(static_cast<double>(ext[d])) +
+                                      " m long, less than 3 cells of " + std::to_string(static_cast<double>(min_cell)) +
+                                      " m (twice the largest radius plus the skin): a particle would meet two images of another");
+        (d == 0 ? g.length.x : d == 1 ? g.length.y : g.length.z) = ext[d];
+      }
     return g;
   }
 
@@ -63,6 +78,13 @@ struct GridSpec {
     cy = static_cast<int>(ty);
     cz = static_cast<int>(tz);
     return true;
+  }
+
+  // Inside [lo, hi) along the axes that are not periodic (and not NaN): along the periodic ones a
+  // particle may stray past the box until the next rebuild wraps it.
+  BLAZE_HD bool inside_fixed_axes(const Vec3<Real>& p) const {
+    return ((periodic & 1u) || (p.x >= lo.x && p.x < hi.x)) && ((periodic & 2u) || (p.y >= lo.y && p.y < hi.y)) &&
+           ((periodic & 4u) || (p.z >= lo.z && p.z < hi.z)) && p.x == p.x && p.y == p.y && p.z == p.z;
   }
 
   BLAZE_HD std::uint32_t hash(int cx, int cy, int cz) const {

@@ -1,7 +1,7 @@
 // Checkpoint files: a SimulationSnapshot plus the driver's own text (run metadata), versioned and
 // checksummed, written atomically.
 //
-// Layout (little-endian, version 5; version 4, without the last line, is read too):
+// Layout (little-endian, version 6; versions 4 and 5, without the last lines, are read too):
 //   "BLZCKPT" '\0' | u32 version | u32 bytes per real (4 or 8) | u64 payload bytes | payload |
 //   u64 FNV-1a 64 of the payload
 //   payload: u64 steps, i64 initial count, i64 removed count, f64 removed mass, f64 removed energy,
@@ -10,7 +10,8 @@
 //            pairs), pair values (u64 length + reals), wall ids, wall keys (i32), wall values;
 //            u64 text length + text;
 //            i64 inserted count, f64 inserted mass, energy and kinetic energy, i64 next id, u64 length +
-//            the feeders' state (opaque bytes, pipeline/feeder.hpp)
+//            the feeders' state (opaque bytes, pipeline/feeder.hpp);
+//            u64 length + the image counts (i32, x y z per particle; periodic runs, else empty)
 // Writing goes to <path>.tmp, is flushed and fsync'ed, then renamed over <path>: a run killed
 // mid-write (even by SIGKILL) leaves the previous checkpoint whole. Reading rejects a wrong magic,
 // version or precision, a truncated file and a checksum mismatch, each with a message naming the
@@ -38,7 +39,7 @@ struct CheckpointError : std::runtime_error {
 namespace checkpoint_detail {
 
 constexpr char kMagic[8] = {'B', 'L', 'Z', 'C', 'K', 'P', 'T', '\0'};
-constexpr std::uint32_t kVersion = 5;  // 2: the removed particles' energy; 3: the contact store; 4: 32-bit wall keys (meshes); 5: feeders
+constexpr std::uint32_t kVersion = 6;  // 2: the removed particles' energy; 3: the contact store; 4: 32-bit wall keys (meshes); 5: feeders; 6: image counts (periodic axes)
 
 inline std::uint64_t fnv1a(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -123,6 +124,7 @@ void write_checkpoint(const std::string& path, const SimulationSnapshot<Real>& s
   put(payload, static_cast<std::int64_t>(s.next_id));
   put(payload, static_cast<std::uint64_t>(feeders.size()));
   payload += feeders;
+  put_array(payload, s.store.image);
 
   std::string file(kMagic, sizeof kMagic);
   put(file, kVersion);
@@ -171,8 +173,8 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
   const auto version = head.get<std::uint32_t>();
   const auto real_bytes = head.get<std::uint32_t>();
   const auto payload_bytes = head.get<std::uint64_t>();
-  if (version != kVersion && version != 4)
-    throw CheckpointError(path + ": checkpoint version " + std::to_string(version) + ", this Blaze reads version " +
+  if (version != kVersion && version != 4 && version != 5)
+    throw CheckpointError(path + ": checkpoint version " + std::to_string(version) + ", this Blaze reads versions 4 to " +
                           std::to_string(kVersion));
   if (real_bytes != sizeof(Real))
     throw CheckpointError(path + ": written in " + (real_bytes == 4 ? "float" : "double") + ", the run is in " +
@@ -222,6 +224,10 @@ Checkpoint<Real> read_checkpoint(const std::string& path) {
     s.next_id = static_cast<Index>(r.get<std::int64_t>());
     const auto feeders = r.array<char>();
     c.feeders.assign(feeders.begin(), feeders.end());
+    if (version >= 6) {
+      s.store.image = r.array<Index>();
+      if (!s.store.image.empty() && s.store.image.size() != 3 * n) r.fail("the image counts' length differs from 3 x the particle count");
+    }
   } else {
     for (Index id : s.store.id) s.next_id = std::max(s.next_id, id + 1);
   }

@@ -134,8 +134,10 @@ class VtuFile {
   std::vector<Array> cells_, point_data_, cell_data_;
 };
 
+// `unwrapped`: periodic runs' unwrapped positions (Simulation::unwrapped_positions), written as
+// "unwrapped_position" beside the wrapped points; empty: none.
 template <class Real>
-void write_particles_vtu(const std::string& path, const ParticleState<Real>& s) {
+void write_particles_vtu(const std::string& path, const ParticleState<Real>& s, const std::vector<Vec3<double>>& unwrapped = {}) {
   const std::size_t n = s.size();
   std::vector<Real> x, v, w, q, r(s.radius), m(s.mass);
   std::vector<std::int64_t> conn(n), offsets(n);
@@ -159,6 +161,11 @@ void write_particles_vtu(const std::string& path, const ParticleState<Real>& s) 
   f.point_data("id", 1, id);
   f.point_data("type", 1, s.type);
   f.point_data("material", 1, s.material);
+  if (!unwrapped.empty()) {
+    std::vector<double> u;
+    for (const auto& x : unwrapped) u.insert(u.end(), {x.x, x.y, x.z});
+    f.point_data("unwrapped_position", 3, u);
+  }
   f.write(path);
 }
 

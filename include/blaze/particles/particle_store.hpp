@@ -48,6 +48,9 @@ struct StoreSnapshot {
   std::vector<std::vector<Real>> reals;  // ParticleStore::real_fields() order; empty where unused
   std::vector<std::uint8_t> material, type;
   std::vector<Index> id;
+  // Periodic runs: each particle's image counts (x, y, z per particle; the times it was wrapped
+  // across each periodic axis, so x + image L is its unwrapped position); empty otherwise.
+  std::vector<Index> image;
 };
 
 template <class Real, class Space>
@@ -134,6 +137,10 @@ class ParticleStore {
     if (with_ledger_)
       for (auto& l : ledger_) put(l, zeros, n, total);
     if (with_thesis_) put(thesis_, zeros, n, total);
+    if (with_images_) {
+      const std::vector<Index> none(m, 0);
+      for (auto& axis : image_) put(axis, none, n, total);
+    }
     if (with_ledger_ && class_sums_.size() < kClassSumReals * total)  // per-step scratch, column stride: laid anew
       from_host(class_sums_, std::vector<Real>(kClassSumReals * std::max(total, n + n / 2), Real(0)));
     n_ = static_cast<Index>(total);
@@ -210,6 +217,7 @@ class ParticleStore {
     s.material = to_host(material_, n_);
     s.type = to_host(type_, n_);
     s.id = to_host(id_, n_);
+    s.image = download_images();
     return s;
   }
   void restore(const Snapshot& s) {
@@ -231,7 +239,37 @@ class ParticleStore {
     from_host(material_, s.material);
     from_host(type_, s.type);
     from_host(id_, s.id);
+    if (!s.image.empty()) {
+      if (s.image.size() != 3 * s.id.size()) throw std::invalid_argument("particle snapshot: the image counts have the wrong length");
+      for (int d = 0; d < 3; ++d) {
+        std::vector<Index> c(s.id.size());
+        for (std::size_t i = 0; i < c.size(); ++i) c[i] = s.image[3 * i + static_cast<std::size_t>(d)];
+        from_host(image_[d], c);
+      }
+      with_images_ = true;
+    }
     scratch_real_.resize(n_);
+  }
+
+  // Periodic runs keep each particle's image counts (zero for those that have none yet), permuted
+  // with the particles and in snapshots.
+  void keep_images() {
+    with_images_ = true;
+    for (auto& c : image_)
+      if (c.size() < static_cast<std::size_t>(n_)) from_host(c, std::vector<Index>(static_cast<std::size_t>(n_), 0));
+  }
+  bool keeps_images() const { return with_images_; }
+  Index* image(int axis) { return with_images_ ? image_[axis].data() : nullptr; }
+  // The image counts, x, y, z per particle in the store's order (empty unless kept).
+  std::vector<Index> download_images() const {
+    std::vector<Index> out;
+    if (!with_images_) return out;
+    out.resize(3 * static_cast<std::size_t>(n_));
+    for (int d = 0; d < 3; ++d) {
+      const std::vector<Index> c = to_host(image_[d], n_);
+      for (std::size_t i = 0; i < c.size(); ++i) out[3 * i + static_cast<std::size_t>(d)] = c[i];
+    }
+    return out;
   }
 
   // This store becomes a copy of `src`'s state as download() reads it (positions, velocities,
@@ -277,6 +315,8 @@ class ParticleStore {
     for (auto& c : ledger_)
       if (c.size()) permute_one(c, scratch_real_, perm);
     if (thesis_.size()) permute_one(thesis_, scratch_real_, perm);
+    if (with_images_)
+      for (auto& c : image_) permute_one(c, scratch_index_, perm);
   }
 
   // Bytes held per particle (for benchmarks).
@@ -355,7 +395,7 @@ class ParticleStore {
 
   Index n_ = 0;
   // Which optional fields this store keeps (their buffers are empty while it holds no particle).
-  bool with_previous_ = false, with_penetration_ = false, with_ledger_ = false, with_thesis_ = false;
+  bool with_previous_ = false, with_penetration_ = false, with_ledger_ = false, with_thesis_ = false, with_images_ = false;
   Field3 position_, velocity_, angular_velocity_, force_, torque_, acceleration_prev_, torque_prev_;
   Buffer<Real, Space> orientation_[4];
   Buffer<Real, Space> radius_, inv_mass_, inv_inertia_;
@@ -365,6 +405,7 @@ class ParticleStore {
   Buffer<Real, Space> thesis_;      // with the ledger and Features::thesis_power: sum |F_diss| |V| dt
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
+  Buffer<Index, Space> image_[3];  // periodic runs: image counts per axis (keep_images())
   Buffer<Real, Space> scratch_real_;
   Buffer<std::uint8_t, Space> scratch_u8_;
   Buffer<Index, Space> scratch_index_;

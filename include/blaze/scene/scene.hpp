@@ -215,6 +215,7 @@ struct Scene {
   double drag = 0;               // kg/m
   Vec3<double> domain_lo, domain_hi;  // m
   double skin = 0.2;             // neighbour-list skin / largest bounding radius
+  unsigned periodic = 0;         // periodic axes, bit 0: x, 1: y, 2: z (grid/periodic_images.hpp)
   PairsKind pair_evaluation = PairsKind::automatic;  // auto: once for polyhedra, both sides for spheres
   WorldListsKind world_lists = WorldListsKind::automatic;
   bool force_dt = false;         // run even when dt exceeds the safe fraction of the critical step

@@ -72,6 +72,7 @@ inline SceneIdentity scene_identity(const Scene& s) {
   add("simulation.domain_lo", vec(s.domain_lo));
   add("simulation.domain_hi", vec(s.domain_hi));
   add("simulation.skin", num(s.skin));
+  if (s.periodic) add("simulation.periodic", std::to_string(s.periodic));
   add("simulation.seed", std::to_string(s.seed));
   for (std::size_t k = 0; k < s.materials.size(); ++k) {
     const auto& m = s.materials[k];
