@@ -251,7 +251,7 @@ fig-repose-liggghts: deps
 # make fig-2.15 / fig-2.16: the hopper of thesis section 2.5.3 with 2000 spheres and 2000 dodecahedra,
 # poured by a feeder and discharged, three seeds each (HOPPER_SEEDS) -> data/hopper/pizette/,
 # studies/hopper/pizette.md, plots/fig-2.15.png, plots/fig-2.16.png (tools/hopper_pizette.sh;
-# ~30 minutes on 2 CPU cores, most of it the dodecahedra).
+# a GPU target: on 2 CPU cores each dodecahedron run takes about an hour).
 .PHONY: fig-2.15 fig-2.16
 fig-2.15 fig-2.16: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper

@@ -39,7 +39,7 @@ set terminal pngcairo size 1500,600 font ',11'
 set multiplot layout 1,3 title "Fig 2.16: discharge of 2000 spheres and 2000 dodecahedra (mu_{pp} 0.35, mu_{wall} 0.30, e 0.4)"
 set size noratio
 set autoscale
-set xrange [0:3]
+set xrange [0:4.5]
 set yrange [0:*]
 set key top left
 set grid
@@ -57,7 +57,7 @@ set ylabel 'y at the opening (m)'
 set colorbox
 set cblabel 'exit time (s)'
 set palette rgbformulae 33,13,10
-set cbrange [0:3]
+set cbrange [0:4.5]
 eval outline
 set title '(b) spheres: where the particles started, by exit time'
 plot first_s.'/discharge.csv' skip 1 using 2:3:(valid(5) ? 1/0 : 0) with points pt 7 ps 0.45 lc rgb '#bbbbbb' notitle, \

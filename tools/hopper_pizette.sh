@@ -5,8 +5,8 @@
 # Writes DIR/<shape>_s<seed>/ (the study's output), DIR/summary.csv, studies/hopper/pizette.md (the
 # table and the thesis's observations checked: spheres faster, funnel flow, incomplete discharge)
 # and plots/fig-2.15.png (the beds at the opening, in alternating layers of 250 as poured) and
-# plots/fig-2.16.png (discharge curves and flow patterns). ~1 min per sphere run and ~8 min per
-# dodecahedron run on 2 CPU cores.
+# plots/fig-2.16.png (discharge curves and flow patterns). On 2 CPU cores a sphere run takes ~1 min
+# and a dodecahedron run ~1 hour (a GPU target: HOPPER_SEEDS="1" for one seed on the CPU).
 # Usage: tools/hopper_pizette.sh STUDY_BINARY [DIR]        (DIR defaults to data/hopper/pizette)
 set -euo pipefail
 cd "$(dirname "$0")/.."
