@@ -163,7 +163,7 @@ void write_particles_vtu(const std::string& path, const ParticleState<Real>& s, 
   f.point_data("material", 1, s.material);
   if (!unwrapped.empty()) {
     std::vector<double> u;
-    for (const auto& x : unwrapped) u.insert(u.end(), {x.x, x.y, x.z});
+    for (const auto& p : unwrapped) u.insert(u.end(), {p.x, p.y, p.z});
     f.point_data("unwrapped_position", 3, u);
   }
   f.write(path);
