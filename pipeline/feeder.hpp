@@ -108,6 +108,7 @@ template <class Real>
 class Feeder {
  public:
   static constexpr int kTries = 200;  // rounds (centres drawn per particle) before the region counts as full
+  static constexpr long kParallelRound = 4096;  // candidates a round needs to run on all threads
 
   // `shapes`: the scene's polyhedron table (null for spheres).
   Feeder(const Scene& s, std::size_t index, const PolyhedronTable<Real>* shapes)
@@ -118,6 +119,8 @@ class Feeder {
   }
 
   const FeedSpec& spec() const { return spec_; }
+  // Rounds of more candidates than this run on all threads (tests set 0: every round does).
+  void parallel_from(long candidates) { parallel_round_ = candidates; }
   // Steps between insertions, and whether step k is an insertion.
   std::uint64_t every() const { return every_; }
   bool inserts_at(std::uint64_t k) const {
@@ -161,7 +164,8 @@ class Feeder {
     for (int round = 0; round < kTries && !open.empty(); ++round) {
       const long m = static_cast<long>(open.size());
       x.resize(open.size()), ok.assign(open.size(), 0);
-#pragma omp parallel for schedule(dynamic, 256)
+      // (rounds of a few thousand run on one thread: waking the team costs more than their tests)
+#pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
       for (long j = 0; j < m; ++j) {
         CounterEngine e(spec_.seed, draws_ + static_cast<std::uint64_t>(j));
         const double r = pending_[static_cast<std::size_t>(open[j])];
@@ -173,7 +177,7 @@ class Feeder {
       std::vector<long> entry(open.size(), -1);  // a candidate's entry in `fresh`: in candidate order
       for (long j = 0, n = 0; j < m; ++j)
         if (ok[j]) entry[j] = n++, fresh.add(x[j], pending_[static_cast<std::size_t>(open[j])]);
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
       for (long j = 0; j < m; ++j)
         if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], entry[j])) ok[j] = 0;
       std::vector<long> still;
@@ -373,6 +377,7 @@ class Feeder {
   static constexpr std::uint64_t kVelocityStream = 0x5be1d0c7a3e8f2b1ull;  // its key, with the feed's seed
   long shortfall_now_ = 0, short_insertions_ = 0;
   double place_seconds_ = 0, insert_seconds_ = 0;  // not state: timing of this process
+  long parallel_round_ = kParallelRound;
   std::vector<double> delivered_;  // m, every delivered radius (polyhedra: the bounding radius)
 };
 
