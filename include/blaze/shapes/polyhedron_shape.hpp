@@ -57,7 +57,9 @@
 // largest separation. Sphere-sphere as in sphere.hpp.
 //
 // Polyhedron-world (Algorithm 2): the centre must be on the wall's side and within bound_R of
-// the plane (lines 1-2); penetrating vertices whose foot lies inside the polygon are the contact;
+// the plane (lines 1-2); penetrating vertices whose foot lies inside the polygon are the contact
+// (unless they came round an active rim edge: then that edge inside the body is, as the
+// thesis's spheres have no rim contact and its polyhedra none either; collide_world);
 // overlap = the deepest; point = the deepest vertex, spread over those within 1% of its depth
 // (the thesis's mean of the penetrating vertices gains energy with the deepest overlap; see
 // penetrating_vertices), and those vertices are the patch as above. Cylinder (drum): vertices
@@ -415,17 +417,82 @@ struct PolyhedronShape {
     const PolyhedronData<Real>& A = data(a.type);
     if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, A.bounding_radius, w));
     const Real d_com = dot(a.x - w.centroid, w.normal);
-    if (!(d_com > Real(0) && d_com < A.bounding_radius)) return Geometry::none();
-    Vec3<Real> point;
-    Real deepest;
-    const auto below_inside = [&](const Vec3<Real>& v) {
-      const Real dk = dot(v - w.centroid, w.normal);
-      return dk < Real(0) && w.contains(v - dk * w.normal) ? -dk : Real(0);
-    };
+    if (!(d_com > -A.bounding_radius && d_com < A.bounding_radius)) return Geometry::none();
     Geometry g;
-    if (!penetrating_vertices(a, A, below_inside, point, deepest, g.patch)) return Geometry::none();
-    static_cast<ContactGeometry<Real>&>(g) = {true, -w.normal, deepest, point, A.bounding_radius, ContactKind::vertex_face};
-    return g;
+    Real deepest = 0;
+    if (d_com > Real(0)) {
+      Vec3<Real> point;
+      // A vertex below the plane counts when its foot lies inside and it came through the plate,
+      // not round one of its active rim edges: the line from the centre to it crosses the plane
+      // inside, or outside only past inactive edges (a seam with a coplanar neighbour, which the
+      // floor continues). Round an active edge the rim contact below holds it, at the true depth
+      // (the vertex's depth below the plane there is no overlap: a dodecahedron tipping into an
+      // orifice read up to 65% of its radius).
+      const auto below_inside = [&](const Vec3<Real>& v) {
+        const Real dk = dot(v - w.centroid, w.normal);
+        if (!(dk < Real(0)) || !w.contains(v - dk * w.normal)) return Real(0);
+        const Vec3<Real> cross_at = a.x + (v - a.x) * (d_com / (d_com - dk));
+        return past_active_edge(w, cross_at) ? Real(0) : -dk;
+      };
+      if (penetrating_vertices(a, A, below_inside, point, deepest, g.patch))
+        static_cast<ContactGeometry<Real>&>(g) = {true, -w.normal, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+    }
+    // The active rim edges inside the body: an edge against a face (deeper than the vertices' wins).
+    if (w.active_edges) {
+      const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
+      for (int k = 0; k < w.vertex_count; ++k) {
+        if (!((w.active_edges >> k) & 1u)) continue;
+        Real depth;
+        Vec3<Real> normal, point;
+        if (!rim_in_body(a, A, ra, w.vertex[k], w.vertex[k + 1 < w.vertex_count ? k + 1 : 0], depth, normal, point) || !(depth > deepest))
+          continue;
+        deepest = depth;
+        g = Geometry::of(ContactGeometry<Real>{true, normal, depth, point, A.bounding_radius, ContactKind::edge_edge});
+      }
+    }
+    return deepest > Real(0) ? g : Geometry::none();
+  }
+
+  // Is q (a point of w's plane) outside w past one of its active rim edges?
+  BLAZE_HD static bool past_active_edge(const PlanarPolygon<Real>& w, const Vec3<Real>& q) {
+    for (int k = 0; k < w.vertex_count; ++k) {
+      const Vec3<Real> e0 = w.vertex[k];
+      const Vec3<Real> e = w.vertex[k + 1 < w.vertex_count ? k + 1 : 0] - e0;
+      if (((w.active_edges >> k) & 1u) && dot(cross(e, q - e0), w.normal) < Real(0)) return true;
+    }
+    return false;
+  }
+  // A wall's edge e0 -> e1 against the body: its part inside (clipped by the face planes,
+  // Cyrus & Beck 1978), and at that part's ends and middle the least depth below a face; the
+  // deepest of the three gives the overlap, the point and the normal (that face's, outward: from
+  // the body towards the wall). False when the edge misses the body.
+  BLAZE_HD static bool rim_in_body(const Body& a, const PolyhedronData<Real>& A, const Mat3<Real>& ra, const Vec3<Real>& e0,
+                                   const Vec3<Real>& e1, Real& depth, Vec3<Real>& normal, Vec3<Real>& point) {
+    const Vec3<Real> p0 = ra.transpose_times(e0 - a.x), d = ra.transpose_times(e1 - e0);
+    Real t0 = 0, t1 = 1;
+    for (int f = 0; f < A.face_count && t0 < t1; ++f) {  // inside face f: n.(p0 + t d) <= offset
+      const Real num = A.offset[f] - dot(A.normal[f], p0), den = dot(A.normal[f], d);
+      if (den == Real(0)) {
+        if (num < Real(0)) return false;
+      } else if (den > Real(0)) {
+        t1 = min_r(t1, num / den);
+      } else {
+        t0 = max_r(t0, num / den);
+      }
+    }
+    if (!(t0 < t1)) return false;
+    depth = 0;
+    for (const Real t : {t0, Real(0.5) * (t0 + t1), t1}) {
+      const Vec3<Real> p = p0 + t * d;
+      Real least = Real(0);
+      int face = -1;
+      for (int f = 0; f < A.face_count; ++f) {
+        const Real df = A.offset[f] - dot(A.normal[f], p);
+        if (face < 0 || df < least) least = df, face = f;
+      }
+      if (face >= 0 && least > depth) depth = least, normal = ra * A.normal[face], point = a.x + ra * p;
+    }
+    return depth > Real(0);
   }
 
   BLAZE_HD Geometry collide_world(const Body& a, const Cylinder<Real>& c) const {
