@@ -42,11 +42,15 @@ struct WrapPeriodic {
     const Real lo[3] = {grid.lo.x, grid.lo.y, grid.lo.z}, hi[3] = {grid.hi.x, grid.hi.y, grid.hi.z};
     const Real l[3] = {grid.length.x, grid.length.y, grid.length.z};
     for (int d = 0; d < 3; ++d) {
-      if (!((grid.periodic >> d) & 1u) || !(*c[d] == *c[d])) continue;  // NaN: left to the guard
-      Index k = 0;
-      while (*c[d] >= hi[d]) *c[d] -= l[d], ++k;  // a particle crosses at most a few periods between builds
-      while (*c[d] < lo[d]) *c[d] += l[d], --k;
-      if (k) image[d][i] += k;
+      if (!((grid.periodic >> d) & 1u) || !(*c[d] - *c[d] == Real(0))) continue;  // NaN, Inf: left to the guard
+      if (*c[d] >= lo[d] && *c[d] < hi[d]) continue;
+      const Real k = floor_r((*c[d] - lo[d]) / l[d]);  // periods crossed (1 or -1 but for a very fast particle)
+      *c[d] -= k * l[d];
+      Index n = static_cast<Index>(k);
+      if (*c[d] >= hi[d]) *c[d] -= l[d], ++n;  // rounding at the faces
+      if (*c[d] < lo[d]) *c[d] += l[d], --n;
+      if (!(*c[d] < hi[d])) *c[d] = lo[d];  // lo - (an ulp) + L rounded up to hi: the face itself
+      image[d][i] += n;
     }
     position.set(i, x);
   }
