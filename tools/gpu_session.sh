@@ -10,12 +10,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-/tmp/blaze-gpu}
 mkdir -p "$out"
-export BLAZE_SKIP_DEPS=1 BLAZE_NO_MESHIO=1
-if [ -d .devdeps ] && ! [ -e /usr/include/gsl/gsl_odeiv2.h ]; then
-  mkdir -p /tmp/dd && for f in .devdeps/*.deb; do dpkg -x "$f" /tmp/dd; done
-  export CPATH=/tmp/dd/usr/include${CPATH:+:$CPATH} LIBRARY_PATH=/tmp/dd/usr/lib/x86_64-linux-gnu${LIBRARY_PATH:+:$LIBRARY_PATH} \
-         LD_LIBRARY_PATH=/tmp/dd/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-fi
+. tools/device_env.sh
 n=$(nproc)
 nvidia-smi -L
 make test BACKEND=cuda NPROC="$n" > "$out/test.log" 2>&1
