@@ -468,6 +468,11 @@ struct PolyhedronShape {
   // the body towards the wall). False when the edge misses the body.
   BLAZE_HD static bool rim_in_body(const Body& a, const PolyhedronData<Real>& A, const Mat3<Real>& ra, const Vec3<Real>& e0,
                                    const Vec3<Real>& e1, Real& depth, Vec3<Real>& normal, Vec3<Real>& point) {
+    {  // the edge beyond the bounding sphere: no clipping to do (most edges of a wall)
+      const Vec3<Real> e = e1 - e0;
+      const Real t = clamp_r(dot(a.x - e0, e) / norm2(e), Real(0), Real(1));
+      if (!(norm2(a.x - (e0 + t * e)) < A.bounding_radius * A.bounding_radius)) return false;
+    }
     const Vec3<Real> p0 = ra.transpose_times(e0 - a.x), d = ra.transpose_times(e1 - e0);
     Real t0 = 0, t1 = 1;
     for (int f = 0; f < A.face_count && t0 < t1; ++f) {  // inside face f: n.(p0 + t d) <= offset
