@@ -442,8 +442,8 @@ struct PolyhedronShape {
       const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
       for (int k = 0; k < w.vertex_count; ++k) {
         if (!((w.active_edges >> k) & 1u)) continue;
-        Real depth;
-        Vec3<Real> normal, point;
+        Real depth = 0;
+        Vec3<Real> normal{0, 0, 0}, point{0, 0, 0};
         if (!rim_in_body(a, A, ra, w.vertex[k], w.vertex[k + 1 < w.vertex_count ? k + 1 : 0], depth, normal, point) || !(depth > deepest))
           continue;
         deepest = depth;
