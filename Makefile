@@ -257,6 +257,15 @@ fig-2.15 fig-2.16: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
 	tools/hopper_pizette.sh $(BUILD)/$(RUN_BACKEND)/study_hopper
 
+# make fig-beverloo: glass beads poured into a flat-bottomed cylindrical silo read from STL files
+# (studies/silo/make_silo_stl.py) and discharged through orifices of D/d = 5, 8, 11, 15 with
+# Hertz-Mindlin; Beverloo's C and k fitted -> data/silo/beverloo/, studies/silo/beverloo.md,
+# plots/fig-beverloo.png (tools/beverloo.sh; a GPU target: 70 000 beads per run).
+.PHONY: fig-beverloo
+fig-beverloo: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
+	tools/beverloo.sh $(BUILD)/$(RUN_BACKEND)/study_hopper
+
 # ---- tumbling mills (studies/mill) ---------------------------------------------------------------
 # make table-4.4: the thesis's Table 4.4 (3D lab mill: 20% and 30% filling, 14/22/32 rpm) with the
 # history-free law and Hertz-Mindlin -> data/mill/table-4.4/, studies/mill/table-4.4.md,

@@ -8,19 +8,39 @@
 # plots/fig-2.16.png (discharge curves and flow patterns). On 2 CPU cores a sphere run takes ~1 min
 # and a dodecahedron run ~1 hour (a GPU target: HOPPER_SEEDS="1" for one seed on the CPU).
 # Usage: tools/hopper_pizette.sh STUDY_BINARY [DIR]        (DIR defaults to data/hopper/pizette)
+#   HOPPER_JOBS=6: runs at once; HOPPER_SHAPES=dodecahedra: run those only; HOPPER_RUN=0: only summarise
+#   the runs already in DIR (e.g. brought back from a GPU machine).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$1 dir=${2:-data/hopper/pizette}
 seeds=${HOPPER_SEEDS:-1 2 3}
+shapes=${HOPPER_SHAPES:-spheres dodecahedra}   # the shapes to run (the summary takes both)
+jobs_max=${HOPPER_JOBS:-1}                    # runs at once (a GPU machine has cores to spare)
 mkdir -p "$dir"
+run_case() {  # shape seed
+  local case_dir="$dir/${1}_s$2"
+  mkdir -p "$case_dir"
+  rm -f "$case_dir.failed"
+  "$bin" "studies/hopper/pizette_$1.toml" --set "simulation.seed=$2" --set "output.directory=$case_dir" \
+    > "$case_dir.log" 2>&1 || { echo "hopper: $1 seed $2 failed (see $case_dir.log)"; touch "$case_dir.failed"; return 1; }
+  echo "hopper: $1 seed $2 done"
+}
+if [ "${HOPPER_RUN:-1}" = 1 ]; then
+  for shape in $shapes; do
+    for seed in $seeds; do
+      while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
+      run_case "$shape" "$seed" &
+    done
+  done
+  wait
+  for shape in $shapes; do for seed in $seeds; do [ ! -e "$dir/${shape}_s$seed.failed" ] || exit 1; done; done
+fi
 out="$dir/summary.csv"
 echo "shape,seed,particles,discharged,residual,flow_rate_kg_s,flow_fit_r2,exit_top_centre_s,exit_bottom_sides_s,funnel_flow,wall_time_s" > "$out"
 for shape in spheres dodecahedra; do
   for seed in $seeds; do
     case_dir="$dir/${shape}_s$seed"
-    mkdir -p "$case_dir"
-    "$bin" "studies/hopper/pizette_$shape.toml" --set "simulation.seed=$seed" --set "output.directory=$case_dir" \
-      > "$case_dir.log" 2>&1 || { echo "hopper: $shape seed $seed failed (see $case_dir.log)"; exit 1; }
+    [ -f "$case_dir/manifest.txt" ] || { echo "hopper: no $case_dir/manifest.txt (run it first)"; exit 1; }
     python3 - "$case_dir/manifest.txt" "$shape" "$seed" >> "$out" <<'PY'
 import sys
 m = {}

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# make fig-beverloo: glass beads poured into a flat-bottomed cylindrical silo (an STL file per
+# orifice, studies/silo/make_silo_stl.py) and discharged through orifices of D/d in BEVERLOO_RATIOS
+# (default "5 8 11 15"), each run by the hopper study on studies/silo/beverloo.toml with Hertz-Mindlin.
+# Then W = C rho_b sqrt(g) (D - k d)^(5/2) is fitted as the straight line W^(2/5) = s (D - k d):
+# C = s^(5/2) / (rho_b sqrt(g)), k = -intercept / (s d). Writes DIR/D<mm>/ (each run's output),
+# DIR/summary.csv, studies/silo/beverloo.md (the table, the fit against the literature's ranges and
+# the checks) and plots/fig-beverloo.png. A GPU target: 70 000 beads per run.
+# Usage: tools/beverloo.sh STUDY_BINARY [DIR]                (DIR defaults to data/silo/beverloo)
+#   BEVERLOO_SET="feed[0].count=4000 ..." adds --set overrides to every run (small trial runs);
+#   BEVERLOO_RUN=0 only summarises the runs already in DIR.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=$1 dir=${2:-data/silo/beverloo}
+ratios=${BEVERLOO_RATIOS:-5 8 11 15}
+d=0.004                  # m, the beads' diameter (studies/silo/beverloo.toml)
+mkdir -p "$dir"
+sets=()
+for s in ${BEVERLOO_SET:-}; do sets+=(--set "$s"); done
+cases=""
+for r in $ratios; do
+  read -r D mm t_end < <(python3 -c "r=float('$r'); D=r*$d; print(D, round(D*1000, 3), 1.0 + min(1.5, max(0.5, 7.5/r)))")
+  case_dir="$dir/D$mm"
+  cases="$cases $case_dir"
+  [ "${BEVERLOO_RUN:-1}" = 1 ] || continue
+  mkdir -p "$case_dir"
+  python3 studies/silo/make_silo_stl.py --radius 0.075 --height 0.35 --orifice-radius "$(python3 -c "print($D/2)")" \
+    --segments 96 --out "$case_dir/silo.stl" > /dev/null
+  # the discharge lasts 7.5 / (D/d) s, 0.5 to 1.5 s: long enough for ~1000 beads through the smallest
+  # orifice, short enough that the bed stays above 2 D through the largest
+  "$bin" studies/silo/beverloo.toml --set "mesh[0].file=\"$case_dir/silo.stl\"" --set "study.orifice_half_width=$(python3 -c "print($D/2)")" \
+    --set "simulation.end_time=$t_end" --set "output.directory=$case_dir" "${sets[@]}" > "$case_dir.log" 2>&1 \
+    || { echo "beverloo: D = $mm mm failed (see $case_dir.log)"; tail -5 "$case_dir.log"; exit 1; }
+  echo "beverloo: D = $mm mm (D/d = $r) done: $(grep -a "flow rate\|discharged" "$case_dir.log" | tail -1)"
+done
+python3 studies/silo/beverloo_fit.py --d "$d" --silo-radius 0.075 --summary "$dir/summary.csv" --md studies/silo/beverloo.md $cases
+gnuplot -e "summary='$dir/summary.csv'" plots/fig-beverloo.gp
+echo "wrote $dir/summary.csv, studies/silo/beverloo.md, plots/fig-beverloo.png"
