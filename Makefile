@@ -57,7 +57,7 @@ HEADERS := $(shell find include kernels pipeline verification studies bench apps
 # Host-only sources, compiled by g++ for both backends (toml++ does not compile under nvcc).
 HOST_OBJ := $(BUILD)/host/src/scene_toml.o
 TEST_SRC ?= $(wildcard verification/*.cpp)
-STUDIES := $(notdir $(wildcard studies/*))
+STUDIES := $(notdir $(patsubst %/main.cpp,%,$(wildcard studies/*/main.cpp)))  # folders with a driver (silo is run by study_hopper)
 
 .PHONY: deps test run bench stress clean build-cpu build-cuda check-cuda figures verification-readme
 .DEFAULT_GOAL := run

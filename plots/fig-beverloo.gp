@@ -10,7 +10,8 @@ set key top left
 set grid
 set xlabel 'orifice diameter D (mm)'
 set ylabel 'mass flow rate W (kg/s)'
-set title sprintf("Beverloo's law in a flat-bottomed silo, d = %g mm glass beads, Hertz-Mindlin", 1000*d)
+law = system("head -1 ".summary." | sed -n 's/.* law = //p'")
+set title sprintf("Beverloo's law in a flat-bottomed silo, d = %g mm glass beads, %s", 1000*d, law) noenhanced
 W(D, c, kk) = D > kk*d ? c * rho * sqrt(9.81) * (D - kk*d)**2.5 : 0
 set xrange [0:70]
 set samples 200

@@ -8,7 +8,8 @@
 // directory>/{timeseries.csv, discharge.csv (each particle's place at the opening and exit time),
 // manifest.txt (with the flow rate, residual and flow pattern: discharge_record.hpp),
 // vtu/*.vtu, particles.pvd, walls.vtu} and plots/hopper.png. The scene chooses the law (linear or
-// Hertz); the study runs in double.
+// Hertz, history-free or with a tangential spring, rolling resistance for spheres); the study runs in
+// double.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +32,7 @@
 #include "blaze/sim/schedule.hpp"
 #include "blaze/sim/energy.hpp"
 #include "pipeline/feeder.hpp"
+#include "pipeline/scene_law.hpp"
 #include "pipeline/scene_params.hpp"
 #include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
@@ -86,6 +88,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   std::printf("hopper: %zu particles (%s) placed, %zu feeds, dt = %.3g s (%.3f of the critical step %.3g s), impact overlap %.3g%% of the "
               "radius\n", initial.size(), Shape::name, s.feeds.size(), s.dt, s.dt / s.dt_critical, s.dt_critical, 100 * s.impact_overlap);
   std::printf("backend: %s, %s\n", DefaultSpace::name, device_name(DefaultSpace{}).c_str());
+  std::printf("law: %s\n", scene_law_name(s).c_str());
   // One run: the gate is removed at gate_open_time (a timed event), the contacts keep their state.
   Sim sim(sp, build_laws<Law>(s), build_world<Real>(with_wall_removed_at(s, "gate", gate_open)), initial, shape);
   std::vector<Feeder<Real>> feeders;
@@ -182,6 +185,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   manifest["backend"] = DefaultSpace::name;
   manifest["device"] = device_name(DefaultSpace{});
   manifest["shape"] = Shape::name;
+  manifest["law"] = scene_law_name(s);
   auto put = [&](const char* key, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.17g", v);
@@ -220,10 +224,10 @@ int main(int argc, char** argv) try {
   if (s.precision != PrecisionKind::float64) throw SceneError(path + ": the hopper study runs in double: precision = \"double\"");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   check_run_fits_here(s);
+  // the scene's law, tangential and rolling keys, all of them (pipeline/scene_law.hpp)
   if (s.all_spheres())
-    return s.law == LawKind::linear ? run<LinearLaw<Real>, SphereShape>(s, overrides) : run<HertzLaw<Real>, SphereShape>(s, overrides);
-  return s.law == LawKind::linear ? run<LinearLaw<Real>, PolyhedronShape<Real>>(s, overrides)
-                                  : run<HertzLaw<Real>, PolyhedronShape<Real>>(s, overrides);
+    return with_scene_law<Real, true>(s, [&](auto law) { return run<typename decltype(law)::type, SphereShape>(s, overrides); });
+  return with_scene_law<Real, false>(s, [&](auto law) { return run<typename decltype(law)::type, PolyhedronShape<Real>>(s, overrides); });
 } catch (const std::exception& ex) {
   std::fprintf(stderr, "error: %s\n", ex.what());
   return 1;

@@ -264,6 +264,11 @@ int main(int argc, char** argv) try {
   }
   const ReposeSetup g = derive_repose(path, overrides);
   const Scene& s = g.scene;
+  // The study runs one law, Hertz-Mindlin with rolling resistance (mu_r = 0 allowed): a scene that
+  // names another is refused, not run with this one.
+  if (s.law != LawKind::hertz) throw SceneError(s.place("simulation.law") + ": the repose study runs \"hertz\" (with tangential = \"mindlin\")");
+  if (s.tangential != TangentialKind::mindlin)
+    throw SceneError(s.place("simulation.tangential") + ": the repose study runs \"mindlin\" (a pile needs the tangential spring)");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
   if (!export_dir.empty()) return export_liggghts(g, export_dir);
   if (!dump.empty()) return measure_dump(s, g, dump, dump_wall);
