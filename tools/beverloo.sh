@@ -34,5 +34,5 @@ for r in $ratios; do
   echo "beverloo: D = $mm mm (D/d = $r) done: $(grep -a "flow rate\|discharged" "$case_dir.log" | tail -1)"
 done
 python3 studies/silo/beverloo_fit.py --d "$d" --silo-radius 0.075 --summary "$dir/summary.csv" --md studies/silo/beverloo.md $cases
-gnuplot -e "summary='$dir/summary.csv'" plots/fig-beverloo.gp
+gnuplot -e "summary='$dir/summary.csv'" plots/beverloo.gp
 echo "wrote $dir/summary.csv, studies/silo/beverloo.md, plots/fig-beverloo.png"

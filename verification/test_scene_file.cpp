@@ -11,6 +11,7 @@
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "pipeline/scene_law.hpp"
 #include "pipeline/simulation.hpp"
 #include "verification/tolerances.hpp"
 
@@ -635,4 +636,54 @@ BOOST_AUTO_TEST_CASE(mutation_fuzz_never_crashes_and_every_rejection_is_clear) {
   std::filesystem::remove(last);
 }
 
+
+// The programs that run scenes take the law from pipeline/scene_law.hpp: every combination of the
+// law, tangential and rolling keys gets its own law type (a program that dropped one ran the
+// history-free law silently: study_hopper did), rolling resistance never reaches a polyhedron run,
+// and rolling without a spring is refused.
+BOOST_AUTO_TEST_CASE(every_law_the_scene_names_is_the_law_that_runs) {
+  struct Case {
+    LawKind law;
+    TangentialKind tangential;
+    RollingKind rolling;
+    int expected;  // index into the law list below
+  };
+  const auto which = [](auto tag) {
+    using L = typename decltype(tag)::type;
+    return std::is_same_v<L, LinearLaw<double>>   ? 0 : std::is_same_v<L, HertzLaw<double>> ? 1
+         : std::is_same_v<L, LinearSpringLaw<double>> ? 2 : std::is_same_v<L, HertzMindlinLaw<double>> ? 3
+         : std::is_same_v<L, LinearSpringRollingLaw<double>> ? 4 : std::is_same_v<L, HertzMindlinRollingLaw<double>> ? 5 : -1;
+  };
+  const Case cases[] = {{LawKind::linear, TangentialKind::history_free, RollingKind::none, 0},
+                        {LawKind::hertz, TangentialKind::history_free, RollingKind::none, 1},
+                        {LawKind::linear, TangentialKind::linear_spring, RollingKind::none, 2},
+                        {LawKind::hertz, TangentialKind::mindlin, RollingKind::none, 3},
+                        {LawKind::linear, TangentialKind::linear_spring, RollingKind::cdt, 4},
+                        {LawKind::linear, TangentialKind::linear_spring, RollingKind::epsd, 4},
+                        {LawKind::hertz, TangentialKind::mindlin, RollingKind::cdt, 5},
+                        {LawKind::hertz, TangentialKind::mindlin, RollingKind::epsd, 5}};
+  const auto spheres = [&](const Scene& x) { return with_scene_law<double, true>(x, which); };
+  const auto polyhedra = [&](const Scene& x) { return with_scene_law<double, false>(x, which); };
+  for (const Case& c : cases) {
+    Scene s;
+    s.path = "scene.toml";
+    s.law = c.law, s.tangential = c.tangential, s.rolling = c.rolling;
+    BOOST_TEST(spheres(s) == c.expected);
+    if (c.rolling == RollingKind::none) {
+      BOOST_TEST(polyhedra(s) == c.expected);
+    } else {
+      BOOST_CHECK_EXCEPTION(polyhedra(s), SceneError, [](const SceneError& e) {
+        return std::string(e.what()).find("rolling") != std::string::npos &&
+               std::string(e.what()).find("spheres") != std::string::npos;
+      });
+    }
+  }
+  Scene s;
+  s.path = "scene.toml";
+  s.law = LawKind::hertz, s.tangential = TangentialKind::history_free, s.rolling = RollingKind::epsd;
+  BOOST_CHECK_EXCEPTION(spheres(s), SceneError,
+                        [](const SceneError& e) { return std::string(e.what()).find("tangential") != std::string::npos; });
+  s.rolling = RollingKind::none;
+  BOOST_TEST(scene_law_name(s) == "hertz + history_free");
+}
 BOOST_AUTO_TEST_SUITE_END()

@@ -129,7 +129,7 @@ def main():
         short = [r for r in runs if r["not_placed"] > 0]
         if short:
             f.write("\nThe feeder could not place " + ", ".join(f"{r['not_placed']}" for r in short) +
-                    " of the 70 000 beads in the pour's 0.5 s (D = " + ", ".join(f"{1000 * r['D_m']:.0f}" for r in short) +
+                    " of the 70 000 beads by the pour's end (D = " + ", ".join(f"{1000 * r['D_m']:.0f}" for r in short) +
                     " mm; reported by the run, the bed is that much lower).\n")
         f.write(f"\nFit of W^(2/5) = s D + b: **C = {C:.3f}, k = {k:.2f}** (rho_b = {rho_b:.0f} kg/m^3, the runs' mean).\n\n")
         f.write("Literature: C = 0.55-0.65 and k = 1-2 (Nedderman, Tuezuen, Savage & Houlsby, Chem. Eng. Sci. 37 (1982) 1597); "

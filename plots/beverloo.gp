@@ -1,5 +1,5 @@
 # Beverloo's law: the silo's mass flow rate against the orifice (make fig-beverloo, tools/beverloo.sh)
-#   gnuplot -e "summary='data/silo/beverloo/summary.csv'" plots/fig-beverloo.gp
+#   gnuplot -e "summary='data/silo/beverloo/summary.csv'" plots/beverloo.gp
 if (!exists("summary")) summary = 'data/silo/beverloo/summary.csv'
 fit_line = system("head -1 ".summary)
 C = real(word(fit_line, 6)); k = real(word(fit_line, 9)); rho = real(word(fit_line, 12)); d = real(word(fit_line, 16))
