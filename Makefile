@@ -128,6 +128,7 @@ test: deps
 else
 test: deps
 	@tools/check_layering.sh
+	@python3 studies/silo/beverloo_fit.py --self-test
 	@$(MAKE) --no-print-directory -j$(NPROC) build-cpu
 	@$(MAKE) --no-print-directory check-cuda
 	$(call RUN_TESTS,cpu)
