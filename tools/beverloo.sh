@@ -18,6 +18,11 @@ mkdir -p "$dir"
 sets=()
 for s in ${BEVERLOO_SET:-}; do sets+=(--set "$s"); done
 cases=""
+# the gate (a 70 mm square, studies/silo/beverloo.toml) must cover the orifice: D <= 17 d
+for r in $ratios; do
+  python3 -c "import sys; r = float('$r'); sys.exit(0 if 2 <= r <= 17 else 1)" 2>/dev/null \
+    || { echo "beverloo: BEVERLOO_RATIOS: '$r' is not a D/d from 2 to 17 (the gate covers up to 68 mm)"; exit 1; }
+done
 for r in $ratios; do
   read -r D mm t_end < <(python3 -c "r=float('$r'); D=r*$d; print(D, round(D*1000, 3), 1.0 + min(1.5, max(0.5, 7.5/r)))")
   case_dir="$dir/D$mm"
