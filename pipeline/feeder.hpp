@@ -12,9 +12,9 @@
 // Placement: random sequential addition, in parallel rounds. The due particles' sizes are drawn
 // in order (SizeDistribution) and each keeps its size until it is placed, so a crowded region does
 // not bias the delivered sizes towards the small ones. In a round every particle not yet placed
-// draws a centre in the region (InsertionRegion::draw; from its own counter-based stream,
-// core/counter_random.hpp, so any number of threads gives the same result), which is kept when the
-// particle's bounding sphere overlaps no particle present (the simulation's particles near the
+// draws centres in the region (InsertionRegion::draw; from its own counter-based stream,
+// core/counter_random.hpp, so any number of threads gives the same result), up to kDrawsPerRound
+// until one is clear of what is there; that centre is kept when the particle's bounding sphere overlaps no particle present (the simulation's particles near the
 // region: Simulation::particles_in_box) or placed in an earlier round, no world object
 // (WorldOverlapCheck, as fills are: the world at its initial pose), lies inside the domain, and
 // overlaps no candidate of the same round before it that passed those tests. The tests of a round run on all host threads; after
@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 #include <limits>
+#include <optional>
 #include "blaze/core/counter_random.hpp"
 #include "blaze/scene/scene.hpp"
 #include "blaze/scene/scene_build.hpp"
@@ -45,13 +46,15 @@ namespace blaze {
 
 // The particles a feeder must keep clear of, in a flat grid over the box it places in (cells of
 // the largest diameter, each a linked list through `next_`): an overlap test reads the 27 cells
-// around a centre, an addition is O(1), and nothing is allocated per particle beyond its entry
-// (an unordered_map of cells cost ~1 us per placement, 10% of a 1e6-particle feed's run).
-// Entries are numbered in the order added; overlapping(x, r, before) sees only those below
-// `before`. Tests are const and may run on many threads at once.
+// around a centre, and nothing is allocated per particle beyond its entry (an unordered_map of
+// cells cost ~1 us per placement, 10% of a 1e6-particle feed's run). Entries are numbered;
+// overlapping(x, r, before) sees only those below `before`, whatever their order in a cell's list,
+// so put() may fill numbered entries from many threads at once (each links itself into its cell
+// with an atomic exchange) and the tests give the same answers on any number of threads. Tests are
+// const and may run on many threads at once, but not while entries are being put.
 class PlacementGrid {
  public:
-  PlacementGrid(const Vec3<double>& lo, const Vec3<double>& hi, double cell) : lo_(lo) {
+  PlacementGrid(const Vec3<double>& lo, const Vec3<double>& hi, double cell) : lo_(lo), hi_(hi), cell_(cell) {
     const Vec3<double> span = hi - lo;
     // at most 2^22 cells (16 MiB of heads): a huge region takes coarser cells (correct, slower)
     for (size_ = cell;; size_ *= 1.25) {
@@ -59,6 +62,10 @@ class PlacementGrid {
       if (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) <= 4194304.0) break;
     }
     head_.assign(static_cast<std::size_t>(n_[0] * n_[1] * n_[2]), -1);
+  }
+  // Was it made for this box and cell?
+  bool covers(const Vec3<double>& lo, const Vec3<double>& hi, double cell) const {
+    return lo.x == lo_.x && lo.y == lo_.y && lo.z == lo_.z && hi.x == hi_.x && hi.y == hi_.y && hi.z == hi_.z && cell == cell_;
   }
   // Does a sphere (x, r) overlap an entry below `before` (by more than 0)? Centres outside the box
   // clamp to its border cells: the box holds every centre added, so none is missed.
@@ -70,45 +77,61 @@ class PlacementGrid {
         for (long k = std::max(0L, c[2] - 1); k <= std::min(n_[2] - 1, c[2] + 1); ++k)
           for (std::int32_t e = head_[static_cast<std::size_t>((i * n_[1] + j) * n_[2] + k)]; e >= 0; e = next_[static_cast<std::size_t>(e)]) {
             if (e >= before) continue;
-            const double reach = r + radius_[static_cast<std::size_t>(e)];
-            if (norm2(x - centre_[static_cast<std::size_t>(e)]) < reach * reach) return true;
+            const Entry& q = entry_[static_cast<std::size_t>(e)];
+            const double reach = r + q.r, dx = x.x - q.x, dy = x.y - q.y, dz = x.z - q.z;
+            if (dx * dx + dy * dy + dz * dz < reach * reach) return true;
           }
     return false;
   }
-  void add(const Vec3<double>& x, double r) {
+  // Entries 0 .. n-1 exist from here on (those beyond the old size to be put() before a test).
+  void resize(std::size_t n) { next_.resize(n), at_.resize(n), entry_.resize(n); }
+  std::size_t size() const { return entry_.size(); }
+  // Entry e (below size()) is the sphere (x, r); safe from many threads for distinct e.
+  void put(std::size_t e, const Vec3<double>& x, double r) {
     long c[3];
     cell_of(x, c);
     const std::size_t at = static_cast<std::size_t>((c[0] * n_[1] + c[1]) * n_[2] + c[2]);
-    next_.push_back(head_[at]);
-    head_[at] = static_cast<std::int32_t>(centre_.size());
-    at_.push_back(at), centre_.push_back(x), radius_.push_back(r);
+    at_[e] = at, entry_[e] = Entry{x.x, x.y, x.z, r};
+    next_[e] = __atomic_exchange_n(&head_[at], static_cast<std::int32_t>(e), __ATOMIC_RELAXED);
+  }
+  void add(const Vec3<double>& x, double r) {
+    resize(size() + 1);
+    put(size() - 1, x, r);
   }
   // Empties it, touching only the cells in use.
   void clear() {
     for (const std::size_t at : at_) head_[at] = -1;
-    next_.clear(), at_.clear(), centre_.clear(), radius_.clear();
+    resize(0);
   }
   static constexpr long kAll = 0x7fffffffL;
 
  private:
+  struct Entry {
+    double x, y, z, r;  // m: an entry's centre and radius, in one cache line's half
+  };
   void cell_of(const Vec3<double>& x, long* c) const {
     const double v[3] = {x.x - lo_.x, x.y - lo_.y, x.z - lo_.z};
     for (int d = 0; d < 3; ++d) c[d] = std::clamp(static_cast<long>(std::floor(v[d] / size_)), 0L, n_[d] - 1);
   }
-  Vec3<double> lo_;
+  Vec3<double> lo_, hi_;
+  double cell_ = 0;  // m, the cell asked for
   double size_ = 0;  // m, a cell's edge
   long n_[3];
   std::vector<std::int32_t> head_, next_;
   std::vector<std::size_t> at_;  // each entry's cell
-  std::vector<Vec3<double>> centre_;
-  std::vector<double> radius_;
+  std::vector<Entry> entry_;
 };
 
 template <class Real>
 class Feeder {
  public:
-  static constexpr int kTries = 200;  // rounds (centres drawn per particle) before the region counts as full
-  static constexpr long kParallelRound = 4096;  // candidates a round needs to run on all threads
+  static constexpr int kTries = 50;  // rounds (of kDrawsPerRound centres) before the region counts as full
+  // Centres a particle draws in a round until one is clear of what is there (the round's own
+  // candidates are checked after): these draws run on all threads, the round's bookkeeping on one.
+  // One draw a round took 26 rounds an insertion for the 1e6-bead slab (bench/scenes/feed_box_1m).
+  static constexpr int kDrawsPerRound = 8;
+  // Candidates a round needs to run on all threads (waking a team of 16 costs ~10 us: a few tests).
+  static constexpr long kParallelRound = 256;
 
   // `shapes`: the scene's polyhedron table (null for spheres).
   Feeder(const Scene& s, std::size_t index, const PolyhedronTable<Real>* shapes)
@@ -145,66 +168,96 @@ class Feeder {
     Vec3<double> lo, hi;
     spec_.region.bounds(lo, hi);
     const double reach = 2 * static_cast<double>(sim.max_radius());
-    std::vector<Vec3<double>> centre;
-    std::vector<double> radius;
+    // (the buffers are the feeder's, kept between insertions: no pages to fault in again)
+    std::vector<Vec3<double>>&centre = scratch_.centre, &at = scratch_.at, &x = scratch_.x;
+    std::vector<double>& radius = scratch_.radius;
+    std::vector<long>&open = scratch_.open, &entry = scratch_.entry, &still = scratch_.still;
+    std::vector<char>&placed = scratch_.placed, &ok = scratch_.ok;
     const Vec3<double> margin{reach, reach, reach};
     sim.particles_in_box(lo - margin, hi + margin, centre, radius);
-    PlacementGrid occupied(lo - margin, hi + margin, reach), fresh(lo - margin, hi + margin, reach);
-    for (std::size_t k = 0; k < centre.size(); ++k) occupied.add(centre[k], radius[k]);
-    // Rounds of parallel random sequential addition: every particle still open draws a centre
+    // the grids persist between insertions (emptied, not reallocated) while the box stays the same
+    if (!occupied_ || !occupied_->covers(lo - margin, hi + margin, reach)) {
+      occupied_.emplace(lo - margin, hi + margin, reach);
+      fresh_.emplace(lo - margin, hi + margin, reach);
+    }
+    PlacementGrid &occupied = *occupied_, &fresh = *fresh_;
+    occupied.clear();
+    occupied.resize(centre.size());
+    const long present = static_cast<long>(centre.size());
+#pragma omp parallel for schedule(static) if (present > parallel_round_)
+    for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
+    const auto found_at = std::chrono::steady_clock::now();
+    // Rounds of parallel random sequential addition: every particle still open draws centres
     // (its own counter-based stream: the same on any number of threads), kept when it is clear of
     // the particles present and placed, of the world and of the domain's faces, and of every
     // candidate of the round before it (so candidates need not be tested one by one). The open
     // ones draw again, up to kTries rounds; then the region counts as full until the next insertion.
-    std::vector<long> open(want);
+    // Only the numbering of a round's candidates runs on one thread.
+    open.resize(want);
     for (std::size_t k = 0; k < want; ++k) open[k] = static_cast<long>(k);
-    std::vector<Vec3<double>> at(want), x;
-    std::vector<char> placed(want, 0), ok;
+    at.resize(want), placed.assign(want, 0);
     const std::vector<Vec3<double>> no_vertices;
     for (int round = 0; round < kTries && !open.empty(); ++round) {
+      ++rounds_;
       const long m = static_cast<long>(open.size());
       x.resize(open.size()), ok.assign(open.size(), 0);
-      // (rounds of a few thousand run on one thread: waking the team costs more than their tests)
+      // (rounds of a few hundred run on one thread: waking the team costs more than their tests)
 #pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
       for (long j = 0; j < m; ++j) {
         CounterEngine e(spec_.seed, draws_ + static_cast<std::uint64_t>(j));
         const double r = pending_[static_cast<std::size_t>(open[j])];
-        x[j] = spec_.region.draw(e, r);
-        ok[j] = inside_domain(x[j], r) && !occupied.overlapping(x[j], r) && !world_.blocked(x[j], r, no_vertices);
+        for (int t = 0; t < kDrawsPerRound && !ok[j]; ++t) {
+          x[j] = spec_.region.draw(e, r);
+          ok[j] = inside_domain(x[j], r) && !occupied.overlapping(x[j], r) && !world_.blocked(x[j], r, no_vertices);
+        }
       }
       draws_ += static_cast<std::uint64_t>(m);
+      // the candidates that passed, numbered in candidate order: a candidate's entry in `fresh`
+      entry.assign(open.size(), -1);
+      long passed = 0;
+      for (long j = 0; j < m; ++j)
+        if (ok[j]) entry[static_cast<std::size_t>(j)] = passed++;
       fresh.clear();
-      std::vector<long> entry(open.size(), -1);  // a candidate's entry in `fresh`: in candidate order
-      for (long j = 0, n = 0; j < m; ++j)
-        if (ok[j]) entry[j] = n++, fresh.add(x[j], pending_[static_cast<std::size_t>(open[j])]);
+      fresh.resize(static_cast<std::size_t>(passed));
+#pragma omp parallel for schedule(static) if (m > parallel_round_)
+      for (long j = 0; j < m; ++j)
+        if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
 #pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
       for (long j = 0; j < m; ++j)
         if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], entry[j])) ok[j] = 0;
-      std::vector<long> still;
+      // the kept join the particles present (numbered after them, in candidate order)
+      still.clear();
+      const std::size_t base = occupied.size();
+      long kept = 0;
+      for (long j = 0; j < m; ++j)
+        if (ok[j]) entry[static_cast<std::size_t>(j)] = kept++;
+        else still.push_back(open[j]);
+      occupied.resize(base + static_cast<std::size_t>(kept));
+#pragma omp parallel for schedule(static) if (m > parallel_round_)
       for (long j = 0; j < m; ++j) {
+        if (!ok[j]) continue;
         const std::size_t k = static_cast<std::size_t>(open[j]);
-        if (!ok[j]) {
-          still.push_back(open[j]);
-          continue;
-        }
-        occupied.add(x[j], pending_[k]);
+        occupied.put(base + static_cast<std::size_t>(entry[j]), x[j], pending_[k]);
         at[k] = x[j], placed[k] = 1;
       }
       open.swap(still);
     }
     // the placed, in the order drawn; the rest stay pending, in order, for the next insertion
-    ParticleState<Real> batch;
-    std::vector<double> left;
+    std::vector<std::size_t>& chosen = scratch_.chosen;
+    std::vector<double>& left = scratch_.left;
+    chosen.clear(), left.clear();
     for (std::size_t k = 0; k < pending_.size(); ++k) {
       if (k >= want || !placed[k]) {
         left.push_back(pending_[k]);
         continue;
       }
-      add(batch, at[k], pending_[k]);
+      chosen.push_back(k);
       delivered_.push_back(pending_[k]);
-      ++inserted_;
       mass_ += mass_of(pending_[k]);
     }
+    ParticleState<Real> batch;
+    make_batch(batch, chosen, at);
+    inserted_ += static_cast<long>(chosen.size());
     pending_.swap(left);
     if (pending_.empty()) pending_.push_back(spec_.size.draw(rng_));
     // what is still due: a shortfall (the run reports it)
@@ -215,11 +268,18 @@ class Feeder {
     const auto placed_at = std::chrono::steady_clock::now();
     sim.insert(batch);
     place_seconds_ += std::chrono::duration<double>(placed_at - started).count();
+    find_seconds_ += std::chrono::duration<double>(found_at - started).count();
+    ++insertions_;
     insert_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - placed_at).count();
   }
   // Wall time so far (s) in finding the particles present and placing (the host's part), and in
   // Simulation::insert (appending to the store and re-sorting).
   double place_seconds() const { return place_seconds_; }
+  // Of place_seconds: finding the particles present (read from the store) and binning them.
+  double find_seconds() const { return find_seconds_; }
+  // Insertions so far in this process, and the placement rounds they took.
+  long insertions() const { return insertions_; }
+  long rounds() const { return rounds_; }
   double insert_seconds() const { return insert_seconds_; }
 
   long inserted() const { return inserted_; }
@@ -348,19 +408,40 @@ class Feeder {
            x.z - r >= s_.domain_lo.z && x.z + r <= s_.domain_hi.z;
   }
   // Particle `inserted_` of the feed at x: its velocity spread and orientation from its own stream.
-  void add(ParticleState<Real>& batch, const Vec3<double>& x, double r) {
-    CounterEngine e(spec_.seed ^ kVelocityStream, static_cast<std::uint64_t>(inserted_));
-    std::uniform_real_distribution<double> u(-1, 1);
-    const double ux = u(e), uy = u(e), uz = u(e);
-    const Vec3<double> v = spec_.velocity + Vec3<double>{ux, uy, uz} * spec_.spread;
+  // The batch of the placed particles chosen[i] (centres at[chosen[i]], radii pending_[chosen[i]]),
+  // the i-th of them the feed's (inserted_ + i)-th: its velocity's jitter from that counter.
+  void make_batch(ParticleState<Real>& batch, const std::vector<std::size_t>& chosen, const std::vector<Vec3<double>>& at) const {
+    const long n = static_cast<long>(chosen.size());
     const auto mat = static_cast<std::uint8_t>(type().material);
-    if (shapes_ == nullptr) {  // a sphere scene (type 0, as build_particles gives)
-      batch.add_sphere(vec_cast<Real>(x), static_cast<Real>(r), static_cast<Real>(density()), mat, vec_cast<Real>(v));
+    if (shapes_ == nullptr) {  // a sphere scene (type 0, as build_particles gives): filled on all threads
+      batch.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static) if (n > parallel_round_)
+      for (long i = 0; i < n; ++i) {
+        const std::size_t k = chosen[static_cast<std::size_t>(i)];
+        batch.set_sphere(static_cast<std::size_t>(i), vec_cast<Real>(at[k]), static_cast<Real>(pending_[k]), static_cast<Real>(density()), mat,
+                         vec_cast<Real>(velocity_of(inserted_ + i)));
+      }
       return;
     }
-    const Quat<double> q = spec_.random_orientation ? scene_detail::random_orientation(e) : Quat<double>::identity();
-    add_polyhedron(batch, *shapes_, spec_.type, vec_cast<Real>(x), Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)}, mat,
-                   vec_cast<Real>(v));
+    batch.reserve(static_cast<std::size_t>(n));
+    for (long i = 0; i < n; ++i) {
+      CounterEngine e = velocity_stream(inserted_ + i);
+      const Vec3<double> v = jittered(e);
+      const Quat<double> q = spec_.random_orientation ? scene_detail::random_orientation(e) : Quat<double>::identity();
+      add_polyhedron(batch, *shapes_, spec_.type, vec_cast<Real>(at[chosen[static_cast<std::size_t>(i)]]),
+                     Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)}, mat, vec_cast<Real>(v));
+    }
+  }
+  // The (n)-th delivered particle's stream: its velocity's jitter, then (polyhedra) its orientation.
+  CounterEngine velocity_stream(long n) const { return CounterEngine(spec_.seed ^ kVelocityStream, static_cast<std::uint64_t>(n)); }
+  Vec3<double> jittered(CounterEngine& e) const {
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double ux = u(e), uy = u(e), uz = u(e);
+    return spec_.velocity + Vec3<double>{ux, uy, uz} * spec_.spread;
+  }
+  Vec3<double> velocity_of(long n) const {
+    CounterEngine e = velocity_stream(n);
+    return jittered(e);
   }
 
   const Scene& s_;
@@ -376,9 +457,18 @@ class Feeder {
   static inline const std::string kLayout2 = "feeder2\n";
   static constexpr std::uint64_t kVelocityStream = 0x5be1d0c7a3e8f2b1ull;  // its key, with the feed's seed
   long shortfall_now_ = 0, short_insertions_ = 0;
-  double place_seconds_ = 0, insert_seconds_ = 0;  // not state: timing of this process
+  double place_seconds_ = 0, insert_seconds_ = 0, find_seconds_ = 0;  // not state: timing of this process
+  long insertions_ = 0, rounds_ = 0;
   long parallel_round_ = kParallelRound;
   std::vector<double> delivered_;  // m, every delivered radius (polyhedra: the bounding radius)
+  std::optional<PlacementGrid> occupied_, fresh_;  // not state: placement's grids, kept between insertions
+  struct Scratch {  // not state: placement's buffers, kept between insertions
+    std::vector<Vec3<double>> centre, at, x;
+    std::vector<double> radius, left;
+    std::vector<long> open, entry, still;
+    std::vector<char> placed, ok;
+    std::vector<std::size_t> chosen;
+  } scratch_;
 };
 
 }  // namespace blaze

@@ -278,11 +278,14 @@ int run_scene(const Scene& s, const Options& o) {
               stepping, stepping > 0 ? particle_steps / stepping : 0.0, output_seconds, wall > 0 ? 100 * output_seconds / wall : 0.0,
               static_cast<unsigned long long>(builds), builds ? static_cast<double>(taken) / static_cast<double>(builds) : 0.0);
   if (!feeders.empty()) {
-    double place = 0, insert = 0;
-    for (const auto& f : feeders) place += f.place_seconds(), insert += f.insert_seconds();
-    std::printf("  feeding %.3f s (%.2g%% of the steps' time): placing %.3f s (finding the particles present, drawing and "
-                "testing centres), inserting %.3f s (appending and re-sorting)\n", feed_seconds,
-                stepping > 0 ? 100 * feed_seconds / stepping : 0.0, place, insert);
+    double place = 0, insert = 0, find = 0;
+    long insertions = 0, rounds = 0;
+    for (const auto& f : feeders)
+      place += f.place_seconds(), insert += f.insert_seconds(), find += f.find_seconds(), insertions += f.insertions(), rounds += f.rounds();
+    std::printf("  feeding %.3f s (%.2g%% of the steps' time) in %ld insertions: placing %.3f s (finding the particles present "
+                "%.3f s; drawing and testing centres %.3f s, %.3g rounds an insertion), inserting %.3f s (appending and re-sorting)\n",
+                feed_seconds, stepping > 0 ? 100 * feed_seconds / stepping : 0.0, insertions, place, find, place - find,
+                insertions ? static_cast<double>(rounds) / static_cast<double>(insertions) : 0.0, insert);
   }
   if (o.phases && taken > 0) {  // per step, GPU time on the GPU (phase_timer.hpp)
     std::printf("  phases, ms per step:");

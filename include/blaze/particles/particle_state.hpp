@@ -28,21 +28,25 @@ struct ParticleState {
     mass.reserve(n), inertia.reserve(n), material.reserve(n), type.reserve(n), id.reserve(n);
   }
 
-  // A solid sphere of uniform density (kg/m^3).
-  void add_sphere(const Vec3<Real>& x, Real r, Real density, std::uint8_t mat,
-                  const Vec3<Real>& v = {0, 0, 0}) {
+  void resize(std::size_t n) {
+    position.resize(n), velocity.resize(n), angular_velocity.resize(n), orientation.resize(n), radius.resize(n);
+    mass.resize(n), inertia.resize(n), material.resize(n), type.resize(n), id.resize(n);
+  }
+
+  // Particle i (below size()) becomes a solid sphere of uniform density (kg/m^3), id i, at rest
+  // in rotation; distinct i may be set from many threads at once.
+  void set_sphere(std::size_t i, const Vec3<Real>& x, Real r, Real density, std::uint8_t mat, const Vec3<Real>& v = {0, 0, 0}) {
     const Real m = density * Real(4.0 / 3.0 * 3.14159265358979323846) * r * r * r;
-    position.push_back(x);
-    velocity.push_back(v);
-    angular_velocity.push_back({0, 0, 0});
-    orientation.push_back(Quat<Real>::identity());
-    radius.push_back(r);
-    mass.push_back(m);
-    const Real i = Real(0.4) * m * r * r;
-    inertia.push_back({i, i, i});
-    material.push_back(mat);
-    type.push_back(0);
-    id.push_back(static_cast<Index>(id.size()));
+    const Real moment = Real(0.4) * m * r * r;
+    position[i] = x, velocity[i] = v, angular_velocity[i] = {0, 0, 0}, orientation[i] = Quat<Real>::identity();
+    radius[i] = r, mass[i] = m, inertia[i] = {moment, moment, moment}, material[i] = mat, type[i] = 0;
+    id[i] = static_cast<Index>(i);
+  }
+
+  // A solid sphere of uniform density (kg/m^3).
+  void add_sphere(const Vec3<Real>& x, Real r, Real density, std::uint8_t mat, const Vec3<Real>& v = {0, 0, 0}) {
+    resize(size() + 1);
+    set_sphere(size() - 1, x, r, density, mat, v);
   }
 
   // A rigid body of given mass, principal moments, bounding radius and shape-table type, with its
