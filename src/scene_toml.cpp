@@ -1016,6 +1016,39 @@ void read_meshes(const toml::table& root, const std::string& file, Scene& s) {
   }
 }
 
+// A [mill] and a periodic domain: a drum whose axis runs along a periodic axis is a slice of a long
+// mill (thesis section 4.3.1), so it has no end plates, and its shell and lifters reach past the
+// domain's faces by a particle diameter (a particle near a face meets them as its images do);
+// a drum across a periodic axis would be cut by the period. Without periodic ends, end plates.
+void check_mill_period(Fields& f, const Scene& s, const MillSpec& m) {
+  int along = -1;
+  for (int d = 0; d < 3; ++d)
+    if (std::fabs(std::fabs(d == 0 ? m.axis.x : d == 1 ? m.axis.y : m.axis.z) - 1) < 1e-12) along = d;
+  double largest = 0;
+  for (const auto& t : s.types) largest = std::fmax(largest, t.is_sphere() ? t.radius : t.bounding_radius);
+  for (int d = 0; d < 3; ++d) {
+    if (!((s.periodic >> d) & 1u)) continue;
+    if (d != along)
+      f.fail(*f.get("axis"), "axis", std::string("the periodic axis \"") + "xyz"[d] + "\" (simulation.periodic): a drum's axis may run along a " +
+                                         "periodic axis (a slice of a long mill), not across one (the period would cut the drum)");
+    const double lo = d == 0 ? s.domain_lo.x : d == 1 ? s.domain_lo.y : s.domain_lo.z, hi = d == 0 ? s.domain_hi.x : d == 1 ? s.domain_hi.y : s.domain_hi.z;
+    const double c = d == 0 ? m.centre.x : d == 1 ? m.centre.y : m.centre.z;
+    if (m.end_plates)
+      f.fail(f.has("end_plates") ? *f.get("end_plates") : *f.get("axis"), "end_plates",
+             std::string("false: the domain is periodic along the drum's axis \"") + "xyz"[d] + "\" (simulation.periodic), a slice of a long " +
+                 "mill, which has no end plates; or drop \"" + "xyz"[d] + "\" from periodic for a whole drum");
+    if (c - 0.5 * m.length > lo - 2 * largest || c + 0.5 * m.length < hi + 2 * largest)
+      f.fail(*f.get("length"), "length", "a drum reaching a particle diameter past the periodic domain's faces (from " + Scene::shortest(lo - 2 * largest) +
+                                             " to " + Scene::shortest(hi + 2 * largest) + " m along the axis; the domain spans " + Scene::shortest(lo) +
+                                             " to " + Scene::shortest(hi) + " m)");
+  }
+  if (!m.end_plates && along >= 0 && !((s.periodic >> along) & 1u))
+    f.fail(*f.get("end_plates"), "end_plates", std::string("true, or the domain periodic along the drum's axis (periodic = [\"") + "xyz"[along] +
+                                                   "\"]): a drum without end plates spills its charge out of its ends");
+  if (!m.end_plates && along < 0)
+    f.fail(*f.get("end_plates"), "end_plates", "true: a drum without end plates needs its axis along a periodic axis of the domain (x, y or z)");
+}
+
 // [mill] (include/blaze/scene/mill_geometry.hpp): a drum shell, end plates and lifter rows, all
 // turning together, added to the scene's cylinders and walls.
 void read_mill(const toml::table& root, const std::string& file, Scene& s) {
@@ -1023,7 +1056,7 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
   if (!node) return;
   if (!node->is_table()) throw SceneError(where(node->source(), file) + ": 'mill' must be a table, written [mill]");
   Fields f(*node->as_table(), "[mill]", file,
-           {"material", "centre", "axis", "diameter", "length", "rpm", "omega", "start_time", "ramp_time", "lifters"});
+           {"material", "centre", "axis", "diameter", "length", "rpm", "omega", "start_time", "ramp_time", "lifters", "end_plates"});
   MillSpec m;
   m.present = true;
   m.material = lookup(f, "material", material_names(s), "material");
@@ -1040,6 +1073,8 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
                          : f.number("omega", {-1e5, 1e5, false, false, "rad/s"});
   m.start = f.number_or("start_time", 0, non_negative("s"));
   m.ramp = f.number_or("ramp_time", 0, non_negative("s"));
+  m.end_plates = f.boolean_or("end_plates", true);
+  check_mill_period(f, s, m);
   const double r = 0.5 * m.diameter;
   if (const toml::node* rows = f.get("lifters")) {
     const toml::array* list = rows->as_array();

@@ -12,11 +12,15 @@
 // - A small mill (drum, end plates, lifters) turning steadily: over six revolutions the energy
 //   method (the accounts' sum) and the torque method (the drive's work) agree within 2% (the
 //   issue's energy balance), with every class's share booked where it belongs.
+// - A periodic slice of a mill (no end plates, the domain periodic along the axis; thesis section
+//   4.3.1 runs slices for whole mills) draws its share of the whole mill's power, and two slices
+//   draw power in proportion to their length.
 // - The thesis's estimate sum |F_diss| |V| dt (section 4.1.4.1), kept beside the accounts
 //   (MillStudyFeatures): head on, where the damping force is parallel to V, it is the energy lost;
 //   in the mill it bounds the exact dissipation from above (|F . V| <= |F| |V|).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <random>
 #include "blaze/scene/mill_geometry.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"
@@ -237,6 +241,75 @@ BOOST_AUTO_TEST_CASE(a_turning_mill_balances_drive_work_and_dissipation) {
       "eq. 4.3 friction, mu = 0.5");
   const auto normal = LinearSpringDashpot<double>::from_restitution(1e5, 0.8);
   run(LinearSpringLaw<double>{normal, TangentialSpring<double>::linear(0.3, 2.0 / 7.0 * 1e5, normal.beta)}, "linear spring");
+}
+
+namespace {
+
+// The drive's mean power (W) over `revolutions` after a settling one, of a mill 0.16 m across
+// (eight 1 cm lifters, 65% of critical speed) holding `layers` layers of 6 x 6 steel balls (r = 5
+// mm) along its axis: a whole mill between end plates, or (slice) the same layers in a domain
+// periodic along the axis, the drum without end plates reaching past the period's faces.
+template <class Law>
+double mill_power(const Law& law, int layers, bool slice, double revolutions) {
+  const double r = 0.005, rho = 7800, pitch = 2.02 * r, span = layers * pitch;
+  MillSpec mill;
+  mill.axis = {0, 0, 1}, mill.diameter = 0.16, mill.omega = 71 * 2 * kPi / 60, mill.ramp = 0.2;
+  mill.length = slice ? span + 8 * r : span;  // a slice's drum: a diameter past each face and more
+  mill.end_plates = !slice;
+  mill.lifters.push_back({8, 0.01, 0.01, 0, 0});
+  World<double> w;
+  for (const MillWall& mw : mill_walls(mill)) {
+    w.polygons.push_back(PlanarPolygon<double>::make(mw.vertices, 1, mw.rim_edges));
+    w.classes.push_back(mw.contact_class);
+  }
+  w.cylinders.push_back(Cylinder<double>::make({0, 0, -0.5 * mill.length}, {0, 0, 1}, 0.08, mill.length, 1));
+  w.classes.push_back(ContactClass::shell);
+  w.motions.assign(static_cast<std::size_t>(w.object_count()), mill_motion(mill));
+  // a lattice, each ball with a random velocity of 0.1 m/s (a perfect lattice would turn as
+  // identical layers, never moving along the axis)
+  ParticleState<double> s;
+  std::mt19937_64 rng(17 + static_cast<unsigned>(layers));
+  std::normal_distribution<double> jitter(0, 0.1 / std::sqrt(3.0));
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < layers; ++k)
+        s.add_sphere({(i - 2.5) * pitch, (j - 2.5) * pitch - 0.02, (k + 0.5) * pitch - 0.5 * span}, r, rho, 0,
+                     {jitter(rng), jitter(rng), jitter(rng)});
+  const double m = rho * 4.0 / 3.0 * kPi * r * r * r, kn = 5e4;
+  const double dt = kPi * std::sqrt(0.5 * m / kn) / 20, period = 2 * kPi / mill.omega;
+  const double half = slice ? 0.5 * span : 0.5 * span + 4 * r;
+  SimulationParams<double> prm{dt, {0, -kG, 0}, {-0.09, -0.09, -half}, {0.09, 0.09, half}, 0.2 * r};
+  prm.energy_ledger = true;
+  prm.periodic = slice ? 4u : 0u;
+  Sim<Law> sim(prm, one_law(law), w, s);
+  sim.run(static_cast<std::uint64_t>(std::llround((mill.ramp + period) / dt)));
+  sim.sample(1);  // the accounts (drive work included) start again from here
+  sim.run(static_cast<std::uint64_t>(std::llround(revolutions * period / dt)));
+  const auto last = sim.sample(1);
+  BOOST_TEST_REQUIRE(sim.size() == s.size());  // none lost through the periodic faces or the ends
+  BOOST_TEST_MESSAGE("mill of " << layers << " layers" << (slice ? ", a periodic slice" : ", end plates") << ": " << s.size() << " balls, "
+                                << last.drive_work / (revolutions * period) << " W; end plates' share of the dissipation "
+                                << last.dissipated_walls[static_cast<int>(ContactClass::end_plate)] / last.dissipated());
+  if (slice) BOOST_TEST(last.dissipated_walls[static_cast<int>(ContactClass::end_plate)] == 0.0);  // it has none
+  else BOOST_TEST(last.dissipated_walls[static_cast<int>(ContactClass::end_plate)] > 0.0);     // the balls reach them
+  return last.drive_work / (revolutions * period);
+}
+
+}  // namespace
+
+// Thesis section 4.3.1 runs a slice of a mill for the whole. A periodic slice of 4 layers of balls
+// (a tenth) draws a tenth of the power of the whole mill of 40 layers between end plates (its end
+// plates take ~1% of the dissipation) over the same two revolutions; and two slices of 4 and 8
+// layers draw power in proportion to their length (the periodic charge is the same everywhere).
+BOOST_AUTO_TEST_CASE(a_periodic_slice_draws_its_share_of_the_whole_mills_power) {
+  const LinearLaw<double> law{LinearSpringDashpot<double>::from_restitution(5e4, 0.8), HistoryFreeFriction<double>::make(0.3, 10)};
+  const double slice = mill_power(law, 4, true, 2), double_slice = mill_power(law, 8, true, 2);
+  const double whole = mill_power(law, 40, false, 2);
+  check_relative({kCase, "periodic mill slice of 8 layers vs twice the slice of 4: drive power", "W", "section 4.3.1: periodic ends"},
+                 double_slice, 2 * slice, tol::mill_slice);
+  check_relative({kCase, "periodic mill slice of 4 layers x 10 vs the whole mill of 40 with end plates: drive power", "W",
+                  "section 4.3.1: periodic ends"},
+                 10 * slice, whole, tol::mill_slice);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -7,7 +7,8 @@
 //   rebuilt (and the particles wrapped) at every step or kept for many, pairs from both sides or once;
 // - unwrapped positions are continuous: a free particle crossing the box several times is at
 //   x0 + v t, also through a checkpoint restart (the image counts are in the snapshot);
-// - bad `periodic` keys and periods too short for the interaction range are refused by name.
+// - bad `periodic` keys and periods too short for the interaction range are refused by name, and
+//   so are [mill] slices that do not fit a periodic domain (end plates, too short, across the axis).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <array>
@@ -271,6 +272,30 @@ spacing = 2.5e-3
   refused("periodic = [\"w\"]", "[0.02, 0.02, 0.02]", {"'periodic'", "\"x\", \"y\", \"z\""});
   refused("periodic = \"x\"", "[0.02, 0.02, 0.02]", {"'periodic'", "an array"});
   refused("periodic = [\"y\"]", "[0.02, 0.005, 0.02]", {"periodic.toml:9", "key 'periodic'", "along y", "less than 3 cells"});
+  // a [mill] slice: the drum along the periodic axis, without end plates, reaching past the faces
+  const auto mill = [](const std::string& keys) {
+    return "[mill]\nmaterial = \"glass\"\ncentre = [0.01, 0.01, 0.01]\ndiameter = 0.03\nrpm = 10\n" + keys + "\n";
+  };
+  const auto with_mill = [&](const std::string& periodic, const std::string& keys) {
+    return scene(periodic, "[0.02, 0.02, 0.02]") + mill(keys);
+  };
+  const auto refused_mill = [&](const std::string& periodic, const std::string& keys, std::initializer_list<const char*> parts) {
+    std::string what = "(accepted)";
+    try {
+      parse_scene(with_mill(periodic, keys), "slice.toml");
+    } catch (const SceneError& e) {
+      what = e.what();
+    }
+    for (const char* p : parts) BOOST_TEST(what.find(p) != std::string::npos, "'" << p << "' in: " << what);
+  };
+  const Scene slice = parse_scene(with_mill("periodic = [\"z\"]", "axis = [0, 0, 1]\nlength = 0.03\nend_plates = false"), "slice.toml");
+  BOOST_TEST(slice.periodic == 4u);
+  for (const auto& w : slice.walls) BOOST_TEST(w.name.find("end plate") == std::string::npos, w.name);
+  refused_mill("periodic = [\"z\"]", "axis = [0, 0, 1]\nlength = 0.03", {"slice.toml", "'end_plates'", "false", "periodic along the drum's axis"});
+  refused_mill("periodic = [\"z\"]", "axis = [0, 0, 1]\nlength = 0.021\nend_plates = false", {"'length'", "a particle diameter past"});
+  refused_mill("periodic = [\"x\"]", "axis = [0, 0, 1]\nlength = 0.03\nend_plates = false", {"'axis'", "not across one"});
+  refused_mill("", "axis = [0, 0, 1]\nlength = 0.03\nend_plates = false", {"'end_plates'", "spills its charge"});
+  refused_mill("periodic = [\"z\"]", "axis = [0, 1, 1]\nlength = 0.03\nend_plates = false", {"'axis'", "\"z\""});
 }
 
 BOOST_AUTO_TEST_SUITE_END()

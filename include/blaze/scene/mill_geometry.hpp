@@ -40,6 +40,8 @@ struct MillSpec {
   Vec3<double> axis{0, 0, 1};    // unit
   double diameter = 0;           // m, inside the shell
   double length = 0;             // m, between the end plates
+  // false: no end plates, for a slice of a long mill with the domain periodic along the axis
+  bool end_plates = true;
   double omega = 0;              // rad/s, about axis (right-hand rule)
   double ramp = 0;               // s
   double start = 0;              // s
@@ -88,7 +90,8 @@ inline void mill_frame(const Vec3<double>& a, Vec3<double>& e1, Vec3<double>& e2
   e2 = cross(a, e1);
 }
 
-// The mill's planar walls (end plates, then every lifter's top and faces); the shell is the
+// The mill's planar walls (end plates unless m.end_plates is false, then every lifter's top and
+// faces); the shell is the
 // cylinder of mill_shell(). Throws std::invalid_argument naming what does not fit.
 inline std::vector<MillWall> mill_walls(const MillSpec& m) {
   using V = Vec3<double>;
@@ -100,6 +103,7 @@ inline std::vector<MillWall> mill_walls(const MillSpec& m) {
   // End plates: squares circumscribing the shell, normals into the drum; their edges lie outside
   // the shell, where no particle comes (not contactable).
   for (double side : {-1.0, 1.0}) {
+    if (!m.end_plates) break;
     const V c = m.centre + a * (side * half);
     const double s = 1.05 * r;
     std::vector<V> v = {c + e1 * s + e2 * s, c - e1 * s + e2 * s, c - e1 * s - e2 * s, c + e1 * s - e2 * s};
