@@ -17,17 +17,44 @@ struct LawTag {
   using type = L;
 };
 
+// The laws come in three families, each compiled where it is used (apps/blaze/run_*.cpp keep one
+// family a translation unit): history-free friction (linear, Hertz), the tangential spring (the
+// parser pairs Mindlin with Hertz and the linear spring with the linear law), and the spring with
+// rolling resistance (spheres only).
+enum class LawFamily { history_free, spring, rolling };
+
+inline LawFamily law_family(const Scene& s) {
+  if (s.rolling == RollingKind::none) return s.tangential == TangentialKind::history_free ? LawFamily::history_free : LawFamily::spring;
+  if (s.tangential == TangentialKind::history_free)
+    throw SceneError(s.place("simulation.rolling") + ": rolling resistance needs a tangential spring (simulation.tangential)");
+  return LawFamily::rolling;
+}
+
+template <class Real, class F>
+int with_history_free_law(const Scene& s, F&& f) {
+  return s.law == LawKind::linear ? f(LawTag<LinearLaw<Real>>{}) : f(LawTag<HertzLaw<Real>>{});
+}
+template <class Real, class F>
+int with_spring_law(const Scene& s, F&& f) {
+  return s.law == LawKind::linear ? f(LawTag<LinearSpringLaw<Real>>{}) : f(LawTag<HertzMindlinLaw<Real>>{});
+}
+template <class Real, class F>
+int with_rolling_law(const Scene& s, F&& f) {
+  return s.law == LawKind::linear ? f(LawTag<LinearSpringRollingLaw<Real>>{}) : f(LawTag<HertzMindlinRollingLaw<Real>>{});
+}
+
 template <class Real, bool Spheres, class F>
 int with_scene_law(const Scene& s, F&& f) {
-  const bool linear = s.law == LawKind::linear;
-  if (s.tangential == TangentialKind::history_free) {
-    if (s.rolling != RollingKind::none)
-      throw SceneError(s.place("simulation.rolling") + ": rolling resistance needs a tangential spring (simulation.tangential)");
-    return linear ? f(LawTag<LinearLaw<Real>>{}) : f(LawTag<HertzLaw<Real>>{});
+  switch (law_family(s)) {
+    case LawFamily::history_free:
+      return with_history_free_law<Real>(s, f);
+    case LawFamily::spring:
+      return with_spring_law<Real>(s, f);
+    case LawFamily::rolling:
+      break;
   }
-  if (s.rolling == RollingKind::none) return linear ? f(LawTag<LinearSpringLaw<Real>>{}) : f(LawTag<HertzMindlinLaw<Real>>{});
   if constexpr (Spheres) {
-    return linear ? f(LawTag<LinearSpringRollingLaw<Real>>{}) : f(LawTag<HertzMindlinRollingLaw<Real>>{});
+    return with_rolling_law<Real>(s, f);
   } else {
     throw SceneError(s.place("simulation.rolling") + " = \"" + to_string(s.rolling) + "\": rolling resistance is for spheres");
   }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include "pipeline/scene_law.hpp"
 #include "apps/blaze/run_families.hpp"
 #include "blaze/exec/device_info.hpp"
 #include "blaze/io/console.hpp"
@@ -82,8 +83,16 @@ Options parse_args(int argc, char** argv) {
 // The scene's law family and precision (apps/blaze/run_*.cpp).
 template <class Real>
 int run_precision(const Scene& s, const Options& o) {
-  if (s.rolling != RollingKind::none) return app::run_rolling<Real>(s, o);
-  return s.tangential != TangentialKind::history_free ? app::run_spring<Real>(s, o) : app::run_history_free<Real>(s, o);
+  switch (law_family(s)) {
+    case LawFamily::history_free:
+      return app::run_history_free<Real>(s, o);
+    case LawFamily::spring:
+      return app::run_spring<Real>(s, o);
+    case LawFamily::rolling:
+      break;
+  }
+  if (!s.all_spheres()) throw SceneError(s.place("simulation.rolling") + " = \"" + to_string(s.rolling) + "\": rolling resistance is for spheres");
+  return app::run_rolling<Real>(s, o);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "blaze/scene/scene_file.hpp"
 #include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_identity.hpp"
+#include "pipeline/scene_law.hpp"
 #include "pipeline/feeder.hpp"
 #include "pipeline/run_log.hpp"
 #include "blaze/sim/schedule.hpp"
@@ -304,21 +305,18 @@ int run_law(const Scene& s, const Options& o) {
   return s.all_spheres() ? run_scene<Real, Law, SphereShape>(s, o) : run_scene<Real, Law, PolyhedronShape<Real>>(s, o);
 }
 
-// The scene's law families: history-free friction (linear, Hertz), the tangential spring (the
-// parser pairs Mindlin with Hertz and the linear spring with the linear law), and the spring with
-// rolling resistance (spheres only: the parser sees to it).
+// The scene's law families (pipeline/scene_law.hpp; rolling resistance for spheres only).
 template <class Real>
 int run_history_free(const Scene& s, const Options& o) {
-  return s.law == LawKind::linear ? run_law<Real, LinearLaw<Real>>(s, o) : run_law<Real, HertzLaw<Real>>(s, o);
+  return with_history_free_law<Real>(s, [&](auto law) { return run_law<Real, typename decltype(law)::type>(s, o); });
 }
 template <class Real>
 int run_spring(const Scene& s, const Options& o) {
-  return s.law == LawKind::linear ? run_law<Real, LinearSpringLaw<Real>>(s, o) : run_law<Real, HertzMindlinLaw<Real>>(s, o);
+  return with_spring_law<Real>(s, [&](auto law) { return run_law<Real, typename decltype(law)::type>(s, o); });
 }
 template <class Real>
 int run_rolling(const Scene& s, const Options& o) {
-  return s.law == LawKind::linear ? run_scene<Real, LinearSpringRollingLaw<Real>, SphereShape>(s, o)
-                                  : run_scene<Real, HertzMindlinRollingLaw<Real>, SphereShape>(s, o);
+  return with_rolling_law<Real>(s, [&](auto law) { return run_scene<Real, typename decltype(law)::type, SphereShape>(s, o); });
 }
 
 }  // namespace blaze::app
