@@ -1033,10 +1033,13 @@ void check_mill_period(Fields& f, const Scene& s, const MillSpec& m) {
                                          "periodic axis (a slice of a long mill), not across one (the period would cut the drum)");
     const double lo = d == 0 ? s.domain_lo.x : d == 1 ? s.domain_lo.y : s.domain_lo.z, hi = d == 0 ? s.domain_hi.x : d == 1 ? s.domain_hi.y : s.domain_hi.z;
     const double c = d == 0 ? m.centre.x : d == 1 ? m.centre.y : m.centre.z;
-    if (m.end_plates)
-      f.fail(f.has("end_plates") ? *f.get("end_plates") : *f.get("axis"), "end_plates",
-             std::string("false: the domain is periodic along the drum's axis \"") + "xyz"[d] + "\" (simulation.periodic), a slice of a long " +
-                 "mill, which has no end plates; or drop \"" + "xyz"[d] + "\" from periodic for a whole drum");
+    if (m.end_plates) {
+      const std::string allowed = std::string("false: the domain is periodic along the drum's axis \"") + "xyz"[d] +
+                                  "\" (simulation.periodic), a slice of a long mill, which has no end plates; or drop \"" + "xyz"[d] +
+                                  "\" from periodic for a whole drum";
+      if (f.has("end_plates")) f.fail(*f.get("end_plates"), "end_plates", allowed);
+      f.missing("end_plates", allowed);
+    }
     if (c - 0.5 * m.length > lo - 2 * largest || c + 0.5 * m.length < hi + 2 * largest)
       f.fail(*f.get("length"), "length", "a drum reaching a particle diameter past the periodic domain's faces (from " + Scene::shortest(lo - 2 * largest) +
                                              " to " + Scene::shortest(hi + 2 * largest) + " m along the axis; the domain spans " + Scene::shortest(lo) +
