@@ -4,7 +4,9 @@
 //   with R^2 = 1, and the residual is the fraction never sampled as gone;
 // - a bed draining from its centre column down (exit time growing with the distance from the axis,
 //   falling with height: funnel flow) is called funnel flow; one descending as a whole (the bottom
-//   layer first, whatever its x: mass flow) is not.
+//   layer first, whatever its x: mass flow) is not;
+// - a flow that stops with particles over the orifice has arched; one that stops with particles
+//   only in the dead zones at the sides has drained.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include "blaze/particles/particle_state.hpp"
@@ -24,18 +26,19 @@ ParticleState<double> bed(int nx, int ny) {
   return s;
 }
 
-// Replays a discharge: particle k leaves at exit(k) (inf: never), sampled every `dt`.
+// Replays a discharge: particle k leaves at exit(k) (inf: never), sampled every `dt`; `arch_span`
+// as the study's [study] arch_time.
 template <class Exit>
-hopper::DischargeSummary replay(const ParticleState<double>& s, Exit exit, double dt, double t_end) {
+hopper::DischargeSummary replay(const ParticleState<double>& s, Exit exit, double dt, double t_end, double arch_span = 0) {
   hopper::DischargeRecord r;
-  r.open(s, 0.0);
+  r.open(s, 0.0, 0.025);
   for (double t = 0; t <= t_end + 1e-12; t += dt) {
     ParticleState<double> left;
     for (std::size_t k = 0; k < s.size(); ++k)
       if (!(exit(k) <= t)) left.add_sphere(s.position[k], s.radius[k], 1000, 0, {0, 0, 0}), left.id.back() = s.id[k];
     r.sample(t, left);
   }
-  return r.summary(0.025);
+  return r.summary(0.025, arch_span);
 }
 
 }  // namespace
@@ -85,6 +88,40 @@ BOOST_AUTO_TEST_CASE(funnel_flow_is_told_from_mass_flow) {
       BOOST_TEST(m.residual == 0);
     }
   }
+}
+
+// An arch: the core drains from the bottom up until, at t_stop, the flow stops with rows of the
+// core still over the orifice (a clog); a drained hopper stops with particles only at its sides.
+// Both stop; only the first has arched, with its last exit at t_stop (to the sampling).
+BOOST_AUTO_TEST_CASE(an_arch_is_told_from_a_drained_hopper) {
+  for (const int nx : {12, 20})
+    for (const double t_stop : {0.3, 0.8})
+      for (const double dt : {0.005, 0.02}) {
+        const ParticleState<double> s = bed(nx, 30);
+        const auto clogged = [&](std::size_t k) {
+          const double x = std::fabs(s.position[k].x), y = s.position[k].y;
+          const double t = x < 0.025 ? 2 * y : 0.3 + 2 * y + 4 * x;  // the core first, then the sides
+          return t < t_stop ? t : hopper::DischargeRecord::kNever;
+        };
+        const auto drained = [&](std::size_t k) {  // all but the bottom corners, by 2 s
+          const double x = std::fabs(s.position[k].x), y = s.position[k].y;
+          if (x > 0.4 * 0.01 * nx && y < 0.03) return hopper::DischargeRecord::kNever;
+          return x < 0.025 ? 2 * y : 0.3 + 2 * y + 4 * x;
+        };
+        BOOST_TEST_CONTEXT("nx " << nx << ", stop at " << t_stop << " s, sampled every " << dt << " s") {
+          const hopper::DischargeSummary a = replay(s, clogged, dt, t_stop + 1.0, 0.5);
+          BOOST_TEST(a.arched);
+          BOOST_TEST(a.last_exit <= t_stop + 1e-12);
+          BOOST_TEST(a.last_exit > t_stop - dt - 0.02 - 1e-12);  // the last exit before the stop, to a sample and a row
+          const double last = 2 * 0.005 + 2 * 0.01 * 29 + 4 * 0.005 * (nx - 1) + 0.3;  // the drained bed's last exit
+          const hopper::DischargeSummary d = replay(s, drained, dt, last + 1.0, 0.5);
+          BOOST_TEST(!d.arched);
+          BOOST_TEST(d.residual > 0);
+          // not judged without a span, nor before the span has passed
+          BOOST_TEST(!replay(s, clogged, dt, t_stop + 1.0, 0).arched);
+          BOOST_TEST(!replay(s, clogged, dt, t_stop + 0.3, 0.5).arched);
+        }
+      }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -11,6 +11,11 @@
 //     Kinematics of Granular Materials, 1992, ch. 1) the core above the orifice drains first, so
 //     the top-centre particles leave before the bottom-side ones (which may never leave); in mass
 //     flow the bed descends as a whole and the bottom leaves first.
+//   - arching: the flow has stopped (no particle left for a given span) while particles remain
+//     over the orifice (|x| <= its half-width): an arch spans it (a clog, as in To, Lai & Pak, PRL
+//     86 (2001) 71, and Zuriguel et al., PRE 71 (2005) 051303, whose statistic is the mass that
+//     passes before one forms). A hopper that stopped with particles only in its dead zones at the
+//     sides has drained, not arched.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -31,6 +36,8 @@ struct DischargeSummary {
   double flow_r2 = 0;            // of the linear fit
   double t_top_centre = 0, t_bottom_side = 0;  // s from the opening, median exit; inf: most never left
   bool funnel() const { return t_top_centre < t_bottom_side; }
+  bool arched = false;           // the flow stopped with particles over the orifice (arch())
+  double last_exit = 0;          // s from the opening: the last sample at which a particle had left
 };
 
 class DischargeRecord {
@@ -39,8 +46,8 @@ class DischargeRecord {
 
   // At the opening: the bed as it is (x measured from `axis_x`, the orifice's centre line).
   template <class Real>
-  void open(const ParticleState<Real>& st, double axis_x) {
-    axis_ = axis_x;
+  void open(const ParticleState<Real>& st, double axis_x, double orifice_half_width = 0) {
+    axis_ = axis_x, orifice_ = orifice_half_width;
     for (std::size_t i = 0; i < st.size(); ++i) {
       index_[static_cast<std::int64_t>(st.id[i])] = entries_.size();
       entries_.push_back({static_cast<std::int64_t>(st.id[i]), vec_cast<double>(st.position[i]), static_cast<double>(st.mass[i]), kNever});
@@ -55,14 +62,27 @@ class DischargeRecord {
       if (it != index_.end()) present[it->second] = 1;
     }
     double mass = 0;
+    if (curve_.empty()) last_exit_ = t;
     for (std::size_t k = 0; k < entries_.size(); ++k) {
-      if (!present[k] && entries_[k].t_out == kNever) entries_[k].t_out = t;
+      if (!present[k] && entries_[k].t_out == kNever) entries_[k].t_out = t, last_exit_ = t;
       if (entries_[k].t_out != kNever) mass += entries_[k].mass;
     }
     curve_.push_back({t, mass});
+    // the particles of the bed left over the orifice (|x| <= its half-width), counted at this sample
+    over_orifice_ = 0;
+    for (std::size_t i = 0; i < st.size(); ++i)
+      if (index_.count(static_cast<std::int64_t>(st.id[i])) && std::fabs(static_cast<double>(st.position[i].x) - axis_) <= orifice_)
+        ++over_orifice_;
   }
+  // Has an arch formed by the last sample, at t: no particle has left for `span` s (> 0) while at
+  // least `min_over` particles of the bed remain over the orifice?
+  bool arch(double t, double span, std::size_t min_over = 3) const {
+    return span > 0 && !curve_.empty() && t - last_exit_ >= span && over_orifice_ >= min_over;
+  }
+  std::size_t over_orifice() const { return over_orifice_; }
 
-  DischargeSummary summary(double orifice_half_width) const {
+  // `arch_span`: the span without an exit that counts as stopped (arch(); 0: arching not judged).
+  DischargeSummary summary(double orifice_half_width, double arch_span = 0) const {
     DischargeSummary s;
     s.particles = entries_.size();
     double y_lo = kNever, y_hi = -kNever, half = 0;
@@ -85,6 +105,8 @@ class DischargeRecord {
       if (m >= 0.2 * final_mass && m <= 0.7 * final_mass) n += 1, st += t, sm += m, stt += t * t, stm += t * m, smm += m * m;
     const double vt = stt - st * st / std::max(n, 1.0), vm = smm - sm * sm / std::max(n, 1.0), c = stm - st * sm / std::max(n, 1.0);
     if (n >= 3 && vt > 0) s.flow_rate = c / vt, s.flow_r2 = vm > 0 ? c * c / (vt * vm) : 1;
+    s.last_exit = last_exit_;
+    s.arched = !curve_.empty() && arch(curve_.back().first, arch_span);
     return s;
   }
 
@@ -110,7 +132,9 @@ class DischargeRecord {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
   }
-  double axis_ = 0;
+  double axis_ = 0, orifice_ = 0;  // m
+  double last_exit_ = 0;           // s
+  std::size_t over_orifice_ = 0;
   std::vector<Entry> entries_;
   std::unordered_map<std::int64_t, std::size_t> index_;
   std::vector<std::pair<double, double>> curve_;

@@ -4,7 +4,9 @@
 // wall named "gate"; at [study] gate_open_time the gate is removed (a timed event of the one run:
 // the contacts keep their history across it) and the bed drains through the orifice. Particles
 // that fall below the hopper leave the domain: they are removed and counted, and that count is the
-// discharge. Times are reported from the opening (negative while settling). Writes <output
+// discharge. Times are reported from the opening (negative while settling). With [study]
+// arch_time > 0, a run whose flow stops (no exit for that long) with particles over the orifice has
+// arched (discharge_record.hpp): it ends there and says so. Writes <output
 // directory>/{timeseries.csv, discharge.csv (each particle's place at the opening and exit time),
 // manifest.txt (with the flow rate, residual and flow pattern: discharge_record.hpp),
 // vtu/*.vtu, particles.pvd, walls.vtu} and plots/hopper.png. The scene chooses the law (linear or
@@ -78,6 +80,8 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   const double gate_open = s.study_value("gate_open_time", 0, s.end_time, "s (at most end_time)");
   const double orifice = s.study_value_or("orifice_half_width", 0, 10, "m (the flow pattern's centre column)", 0.025);
   const double axis_x = s.study_value_or("orifice_x", -1e3, 1e3, "m (the orifice's centre line)", 0.0);
+  // an arch: no exit for this long with particles over the orifice ends the run (0: run to the end)
+  const double arch_span = s.study_value_or("arch_time", 0, 1e3, "s without a particle leaving, with some over the orifice (0: off)", 0.0);
   s.check_study_used();
   const SimulationParams<Real> sp = simulation_params<Real>(s, polyhedra);
   Shape shape;
@@ -115,6 +119,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   const auto k_end = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));
   const auto wall_start = std::chrono::steady_clock::now();
   hopper::DischargeRecord record;
+  double arched_at = -1;  // s from the opening, when an arch was seen (-1: none)
   Index count0 = 0;  // what had left the domain when the gate opened (the discharge counts from there)
   double mass0 = 0;
   for (std::uint64_t k = 0;; ) {
@@ -124,7 +129,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
       if (count0 > 0) std::printf("WARNING: %d particles left the domain while the gate was closed\n", static_cast<int>(count0));
       for (const auto& f : feeders)
         if (f.next_insertion(k) != ~std::uint64_t{0}) std::printf("WARNING: feed %s still feeds after the gate opens\n", f.spec().name.c_str());
-      record.open(sim.state(), axis_x);
+      record.open(sim.state(), axis_x, orifice);
     }
     const bool end = k == k_end, csv_due = k % csv_every == 0 || end, vtu_due = k % vtu_every == 0 || end;
     if (csv_due || vtu_due) {
@@ -139,6 +144,11 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
             << en.translational << ',' << en.rotational << ',' << en.potential << ',' << pen.worst << ',' << stored.total() << ','
             << stored.wall_contacts << '\n';
         if (k >= k_open) record.sample(t, st);
+        if (k >= k_open && record.arch(t, arch_span)) {
+          std::printf("  t = %6.3f s  an arch holds: none has left since t = %.3f s, %zu particles over the orifice; the run ends\n", t,
+                      record.summary(orifice).last_exit, record.over_orifice());
+          arched_at = t;
+        }
       }
       if (vtu_due) {
         char name[64];
@@ -150,7 +160,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
                     static_cast<int>(sim.removed_count() - count0), sim.removed_mass() - mass0);
       }
     }
-    if (end) break;
+    if (end || arched_at >= 0) break;
     for (auto& f : feeders)
       if (f.inserts_at(k)) f.feed(sim);
     // Up to the next row, frame, insertion or the opening in one stretch (the GPU batches it).
@@ -164,10 +174,15 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   csv.close();
 
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const hopper::DischargeSummary d = record.summary(orifice);
+  const hopper::DischargeSummary d = record.summary(orifice, arch_span);
+  const double t_run = arched_at >= 0 ? arched_at : s.end_time - gate_open;  // s of discharge run
   record.write_csv(dir + "/discharge.csv");
   std::printf("discharged %zu of %zu particles (%s; %.3f kg) in %.2f s; %.1f%% remain in the hopper\n", d.discharged, d.particles, Shape::name,
-              sim.removed_mass() - mass0, s.end_time - gate_open, 100 * d.residual);
+              sim.removed_mass() - mass0, t_run, 100 * d.residual);
+  if (arch_span > 0)
+    std::printf("%s\n", d.arched ? ("arched: the flow stopped at t = " + std::to_string(d.last_exit) + " s with " +
+                                    std::to_string(record.over_orifice()) + " particles over the orifice").c_str()
+                                 : "no arch: the flow did not stop with particles over the orifice");
   std::printf("steady mass flow rate %.4g kg/s (R^2 %.4f); median exit: top centre %.3g s, bottom sides %.3g s (%s)\n", d.flow_rate,
               d.flow_r2, d.t_top_centre, d.t_bottom_side, d.funnel() ? "funnel flow" : "not funnel flow");
   for (const auto& f : feeders)
@@ -201,6 +216,12 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
   put("exit_top_centre_s", d.t_top_centre);
   put("exit_bottom_sides_s", d.t_bottom_side);
   manifest["funnel_flow"] = d.funnel() ? "yes" : "no";
+  if (arch_span > 0) {
+    manifest["arched"] = d.arched ? "yes" : "no";
+    put("last_exit_s", d.last_exit);
+    put("arch_time_s", arch_span);
+    manifest["over_orifice_at_end"] = std::to_string(record.over_orifice());
+  }
   write_manifest(dir + "/manifest.txt", manifest);
   const bool plotted = plot(dir + "/timeseries.csv", "plots/hopper.png");
   std::printf("wrote %s/timeseries.csv, %s/discharge.csv, %s/particles.pvd (%d frames)%s\n", dir.c_str(), dir.c_str(), dir.c_str(),
