@@ -14,12 +14,13 @@
 // not bias the delivered sizes towards the small ones. In a round every particle not yet placed
 // draws centres in the region (InsertionRegion::draw; from its own counter-based stream,
 // core/counter_random.hpp, so any number of threads gives the same result), up to kDrawsPerRound
-// until one is clear of what is there; that centre is kept when the particle's bounding sphere overlaps no particle present (the simulation's particles near the
-// region: Simulation::particles_in_box) or placed in an earlier round, no world object
-// (WorldOverlapCheck, as fills are: the world at its initial pose), lies inside the domain, and
-// overlaps no candidate of the same round before it that passed those tests. The tests of a round run on all host threads; after
-// kTries rounds the particles still open stay due (the region counts as full until the next
-// insertion). At the low fractions a feed region should have, a round places nearly all.
+// until one is clear of what is there: of the particles present (the simulation's particles near
+// the region: Simulation::particles_in_box) and placed in earlier rounds, of the world
+// (WorldOverlapCheck, as fills are: the world at its initial pose) and inside the domain. That
+// centre is kept when it also overlaps no candidate of the same round before it that passed those
+// tests. The tests of a round run on all host threads; after kTries rounds the particles still
+// open stay due (the region counts as full until the next insertion). At the low fractions a feed
+// region should have, a round places nearly all.
 // (Stop 32's one-at-a-time placement took 120% of the steps' time for 1e6 beads on the H200.)
 //
 // State (save()/restore(), in the checkpoint): the size engine, the placement stream's counter,
@@ -127,10 +128,10 @@ class Feeder {
  public:
   static constexpr int kTries = 50;  // rounds (of kDrawsPerRound centres) before the region counts as full
   // Centres a particle draws in a round until one is clear of what is there (the round's own
-  // candidates are checked after): these draws run on all threads, the round's bookkeeping on one.
-  // One draw a round took 26 rounds an insertion for the 1e6-bead slab (bench/scenes/feed_box_1m).
+  // candidates are checked after). One draw a round took 26 rounds an insertion for the 1e6-bead
+  // slab (bench/scenes/feed_box_1m.toml), 8 take 5.
   static constexpr int kDrawsPerRound = 8;
-  // Candidates a round needs to run on all threads (waking a team of 16 costs ~10 us: a few tests).
+  // Candidates a round needs to run on all threads (fewer: waking the team costs more than their tests).
   static constexpr long kParallelRound = 256;
 
   // `shapes`: the scene's polyhedron table (null for spheres).
@@ -407,7 +408,6 @@ class Feeder {
     return x.x - r >= s_.domain_lo.x && x.x + r <= s_.domain_hi.x && x.y - r >= s_.domain_lo.y && x.y + r <= s_.domain_hi.y &&
            x.z - r >= s_.domain_lo.z && x.z + r <= s_.domain_hi.z;
   }
-  // Particle `inserted_` of the feed at x: its velocity spread and orientation from its own stream.
   // The batch of the placed particles chosen[i] (centres at[chosen[i]], radii pending_[chosen[i]]),
   // the i-th of them the feed's (inserted_ + i)-th: its velocity's jitter from that counter.
   void make_batch(ParticleState<Real>& batch, const std::vector<std::size_t>& chosen, const std::vector<Vec3<double>>& at) const {

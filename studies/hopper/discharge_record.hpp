@@ -80,6 +80,7 @@ class DischargeRecord {
     return span > 0 && !curve_.empty() && t - last_exit_ >= span && over_orifice_ >= min_over;
   }
   std::size_t over_orifice() const { return over_orifice_; }
+  double last_exit() const { return last_exit_; }  // s: the last sample at which a particle had left
 
   // `arch_span`: the span without an exit that counts as stopped (arch(); 0: arching not judged).
   DischargeSummary summary(double orifice_half_width, double arch_span = 0) const {

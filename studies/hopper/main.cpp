@@ -146,7 +146,7 @@ int run(const Scene& s, const std::vector<std::string>& overrides) {
         if (k >= k_open) record.sample(t, st);
         if (k >= k_open && record.arch(t, arch_span)) {
           std::printf("  t = %6.3f s  an arch holds: none has left since t = %.3f s, %zu particles over the orifice; the run ends\n", t,
-                      record.summary(orifice).last_exit, record.over_orifice());
+                      record.last_exit(), record.over_orifice());
           arched_at = t;
         }
       }
