@@ -57,7 +57,7 @@ struct ParticleTally {
     SampleTally t;
     const Real m = Real(1) / p.inv_mass[i];
     const Energies e = body_energies(static_cast<double>(m), p.velocity.get(i), p.orientation.get(i),
-                                     p.angular_velocity.get(i), shape.principal_inertia(p.inv_inertia[i], p.type[i]),
+                                     p.angular_velocity.get(i), shape.principal_inertia(p.inv_inertia[i], p.radius[i], p.type[i]),
                                      p.position.get(i), gravity);
     t.translational = e.translational, t.rotational = e.rotational, t.potential = e.potential;
     t.mass = static_cast<double>(m);

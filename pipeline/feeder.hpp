@@ -400,9 +400,11 @@ class Feeder {
   }
   const ParticleTypeSpec& type() const { return s_.types[static_cast<std::size_t>(spec_.type)]; }
   double density() const { return s_.materials[static_cast<std::size_t>(type().material)].density; }
-  // kg: a sphere of radius r, or the polyhedral type's mass
+  // kg: a sphere of radius r, or the polyhedral type's shape scaled to bounding radius r
   double mass_of(double r) const {
-    return type().is_sphere() ? density() * 4.0 / 3.0 * M_PI * r * r * r : density() * type().volume;
+    if (type().is_sphere()) return density() * 4.0 / 3.0 * M_PI * r * r * r;
+    const double k = r / type().bounding_radius;
+    return density() * type().volume * k * k * k;
   }
   bool inside_domain(const Vec3<double>& x, double r) const {
     return x.x - r >= s_.domain_lo.x && x.x + r <= s_.domain_hi.x && x.y - r >= s_.domain_lo.y && x.y + r <= s_.domain_hi.y &&
@@ -428,8 +430,9 @@ class Feeder {
       CounterEngine e = velocity_stream(inserted_ + i);
       const Vec3<double> v = jittered(e);
       const Quat<double> q = spec_.random_orientation ? scene_detail::random_orientation(e) : Quat<double>::identity();
-      add_polyhedron(batch, *shapes_, spec_.type, vec_cast<Real>(at[chosen[static_cast<std::size_t>(i)]]),
-                     Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)}, mat, vec_cast<Real>(v));
+      const std::size_t k = chosen[static_cast<std::size_t>(i)];
+      add_polyhedron(batch, *shapes_, spec_.type, vec_cast<Real>(at[k]), Quat<Real>{Real(q.w), Real(q.x), Real(q.y), Real(q.z)}, mat,
+                     vec_cast<Real>(v), Vec3<Real>{0, 0, 0}, spec_.size.kind == SizeKind::constant ? Real(0) : static_cast<Real>(pending_[k]));
     }
   }
   // The (n)-th delivered particle's stream: its velocity's jitter, then (polyhedra) its orientation.

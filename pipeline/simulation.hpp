@@ -627,7 +627,7 @@ class Simulation {
   ParticleState<Real> state_of(const ParticleStore<Real, Space>& store) const {
     ParticleState<Real> s = store.download();
     const auto inv_i = store.download_inverse_inertia();
-    for (std::size_t k = 0; k < s.size(); ++k) s.inertia[k] = shape_.principal_inertia(inv_i[k], s.type[k]);
+    for (std::size_t k = 0; k < s.size(); ++k) s.inertia[k] = shape_.principal_inertia(inv_i[k], s.radius[k], s.type[k]);
     return s;
   }
   // The sample's reduction; with_energy runs StoredContactEnergy first (its per-particle slots).

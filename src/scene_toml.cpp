@@ -693,9 +693,10 @@ long read_placements(const toml::table& root, const std::string& file, Scene& s)
   return total;
 }
 
-// A [[feed]]'s `region` and `size` tables, and the feed (scene.hpp's FeedSpec). A sphere feed with
-// a size distribution adds two derived particle types, its smallest and largest particle, so that
-// the critical step, the impact overlap, the grid and the overlap checks see them.
+// A [[feed]]'s `region` and `size` tables, and the feed (scene.hpp's FeedSpec). A feed with a size
+// distribution adds two derived particle types, its smallest and largest particle (for a polyhedral
+// type: its shape scaled to those bounding radii), so that the critical step, the impact overlap,
+// the grid and the overlap checks see them.
 InsertionRegion read_region(Fields& feed, const std::string& file, const Scene& s, double r) {
   const toml::node* n = feed.get("region");
   const std::string allowed = "a table: region = { kind = \"box\", lo = [..], hi = [..] }, { kind = \"cylinder\", centre, axis, radius, "
@@ -781,10 +782,7 @@ void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
     d.name = f.string_or("name", item_label("feed", k), "a non-empty name");
     d.type = lookup(f, "type", types, "particle_type");
     const ParticleTypeSpec t = s.types[static_cast<std::size_t>(d.type)];
-    if (f.has("size") && !s.all_spheres())
-      f.fail(*f.get("size"), "size", "size distributions are for scenes of spheres only; with polyhedra each type has one size "
-             "(give one [[feed]] per [[particle_type]] for several sizes)");
-    d.size = read_size(f, file, t.size());
+    d.size = read_size(f, file, t.size());  // polyhedra: bounding radii, the shape scaled to each
     const double r = d.size.largest();
     d.region = read_region(f, file, s, r);
     d.start = f.number_or("start_time", 0, non_negative("s"));
@@ -810,8 +808,15 @@ void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
       for (const double radius : {d.size.smallest(), d.size.largest()}) {
         ParticleTypeSpec e = t;
         e.name = t.name + " (" + d.name + (radius == d.size.smallest() ? " smallest)" : " largest)");
-        e.radius = radius;
-        e.volume = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
+        e.derived = true;
+        if (t.is_sphere()) {
+          e.radius = radius;
+          e.volume = 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
+        } else {
+          const double scale = radius / t.bounding_radius;
+          e.bounding_radius = radius;
+          e.volume = t.volume * scale * scale * scale;
+        }
         s.types.push_back(e);
       }
     s.feeds.push_back(d);

@@ -6,6 +6,9 @@
 // - a feed into an empty box meets its due count exactly at every insertion (rate) or within one
 //   particle's mass (mass_rate), for spheres and cubes, and no inserted particle overlaps another
 //   or the floor; particle count is conserved (present + removed = inserted);
+// - cubes (and the spheres of a polyhedron scene) fed with a scale distribution of one shape: the
+//   delivered bounding radii pass the same KS test, each body is its type scaled (mass s^3,
+//   moments s^5), apart at insertion;
 // - a region too small for the rate reports its shortfall and what stayed undelivered;
 // - a restart from a checkpoint continues the same feed bit for bit (particles, sizes, counts);
 // - inserting a particle next to a bed does not disturb its contact histories: two spheres held
@@ -310,6 +313,75 @@ BOOST_AUTO_TEST_CASE(cubes_are_fed_turned_and_apart) {
   int identity = 0;
   for (const auto& q : st.orientation) identity += std::fabs(q.w) > 0.999999;
   BOOST_TEST(identity == 0);
+}
+
+// A scale distribution of one shape file: cubes whose bounding radii follow the requested
+// distribution, each its type's cube scaled (mass s^3, moments s^5), apart at insertion, the
+// distribution's extremes sizing the run; and a sphere type of a polyhedron scene likewise.
+BOOST_AUTO_TEST_CASE(cubes_are_fed_with_a_scale_distribution) {
+  using Run = FeedRun<PolyhedronShape<double>, LinearLaw<double>>;
+  const std::string cube = "name = \"cube\"\nmaterial = \"glass\"\nshape = \"data/shapes/cube.shape\"\nbounding_radius = 4e-3";
+  struct Case {
+    const char* name;
+    std::string size;
+    bool by_mass;
+  };
+  const std::vector<Case> cases = {
+      {"uniform 2.5-5 mm by number", "size = { kind = \"uniform\", min = 2.5e-3, max = 5e-3 }", false},
+      {"Rosin-Rammler by mass", "size = { kind = \"rosin_rammler\", r63 = 4e-3, k = 4, min = 2e-3, max = 5e-3, by = \"mass\" }", true},
+      {"two classes by mass", "size = { kind = \"classes\", radii = [3e-3, 4.5e-3], fractions = [0.3, 0.7], by = \"mass\" }", true},
+  };
+  for (const auto& c : cases) {
+    const std::string rate = c.by_mass ? "mass_rate = 0.3\n" : "rate = 1500\n";
+    const Scene s = parse_scene(feed_scene("type = \"cube\"\n" + rate + "end_time = 0.1\n" + kBoxRegion + c.size, "", "", cube), "cubes.toml");
+    BOOST_TEST(s.types.size() == 3u);  // the cube and its feed's smallest and largest
+    Run run(s);
+    BOOST_TEST(run.shape.table.count == 1);  // one shape: the sizes are scales of it
+    double worst_gap = 1e300;
+    run.run(static_cast<std::uint64_t>(std::llround(0.12 / s.dt)),
+            [&](const Feeder<double>&, Index before) { worst_gap = std::min(worst_gap, closest_gap(run.sim->state(), before)); });
+    const Feeder<double>& f = run.feeders[0];
+    const auto st = run.sim->state();
+    const auto& type = run.shape.table.type[0];
+    double worst_mass = 0, worst_inertia = 0, smallest = 1, largest = 0;
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      const double k = st.radius[i] / type.bounding_radius;
+      smallest = std::min(smallest, st.radius[i]), largest = std::max(largest, st.radius[i]);
+      worst_mass = std::max(worst_mass, std::fabs(st.mass[i] / (type.mass * k * k * k) - 1));
+      worst_inertia = std::max(worst_inertia, std::fabs(st.inertia[i].x * type.inv_inertia.x / std::pow(k, 5) - 1));
+    }
+    const std::string name = std::string("Feeding: cubes, ") + c.name;
+    BOOST_TEST(f.inserted() > 100);
+    BOOST_TEST(f.shortfall() == 0);
+    BOOST_TEST(smallest >= f.spec().size.smallest() * (1 - 1e-12));
+    BOOST_TEST(largest <= f.spec().size.largest() * (1 + 1e-12));
+    BOOST_TEST(largest > 1.2 * smallest);
+    check_at_most({name, "|m / (m_type s^3) - 1| and |I / (I_type s^5) - 1| of every cube", "-", "a scaled cube (rounding)"},
+                  std::max(worst_mass, worst_inertia), tol::scaled_mass_properties);
+    check_at_least({name, "smallest bounding-sphere gap at insertion (m)", "-", "no overlap at insertion"}, worst_gap, 0);
+    check_at_most({name, "Kolmogorov-Smirnov distance of the delivered bounding radii", "-", "99% quantile 1.63/sqrt(n_eff)"},
+                  f.ks_distance(), ks_limit(f.delivered(), c.by_mass));
+    if (c.by_mass)  // within one largest particle's mass of the due mass
+      BOOST_TEST(std::fabs(f.inserted_mass() - 0.3 * 0.1) < type.mass * std::pow(f.spec().size.largest() / type.bounding_radius, 3));
+  }
+  // a sphere type in a polyhedron scene: the table's sphere, scaled
+  const std::string both = "name = \"bead\"\nmaterial = \"glass\"\nradius = 3e-3\n[[particle_type]]\n" + cube;
+  const Scene mixed = parse_scene(feed_scene(std::string("type = \"bead\"\nrate = 1000\nend_time = 0.05\n") + kBoxRegion +
+                                                 "size = { kind = \"uniform\", min = 2e-3, max = 4e-3 }",
+                                             "", "", both),
+                                  "mixed.toml");
+  Run run(mixed);
+  run.run(static_cast<std::uint64_t>(std::llround(0.06 / mixed.dt)));
+  const auto st = run.sim->state();
+  BOOST_TEST_REQUIRE(st.size() > 20u);
+  double worst = 0;
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    const double r = st.radius[i], m = 2500 * 4.0 / 3.0 * M_PI * r * r * r;
+    worst = std::max({worst, std::fabs(st.mass[i] / m - 1), std::fabs(st.inertia[i].y / (0.4 * m * r * r) - 1)});
+  }
+  check_at_most({"Feeding: spheres of a polyhedron scene, uniform 2-4 mm", "|m / (rho 4/3 pi r^3) - 1|, |I / (2/5 m r^2) - 1|", "-",
+                 "a scaled sphere type (rounding)"},
+                worst, tol::scaled_mass_properties);
 }
 
 BOOST_AUTO_TEST_CASE(a_full_region_reports_its_shortfall) {

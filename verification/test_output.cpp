@@ -134,7 +134,8 @@ BOOST_AUTO_TEST_CASE(particle_vtu_reads_back_exactly_double_and_float) {
 }
 
 // Faces in world position: the reference rotates the body-frame vertices with Eigen's quaternion
-// (independent of Blaze's rotate), so positions agree to rounding, not bitwise.
+// (independent of Blaze's rotate), so positions agree to rounding, not bitwise. A body whose radius
+// is not its type's is that shape scaled.
 BOOST_AUTO_TEST_CASE(polyhedra_vtu_faces_in_world_position) {
   if (!readers_wanted()) return;
   const std::vector<ConvexShape> shapes = {load_scaled_shape("data/shapes/cube.shape", 5e-3), ConvexShape{},
@@ -145,7 +146,9 @@ BOOST_AUTO_TEST_CASE(polyhedra_vtu_faces_in_world_position) {
   for (int i = 0; i < 30; ++i) {
     const Quat<double> q = normalized(Quat<double>{g(rng), g(rng), g(rng), g(rng)});
     const auto type = static_cast<std::uint8_t>(i % 3);
-    s.add_body({0.02 * i, g(rng), 0}, q, 5e-3, 1e-3, {1e-9, 1e-9, 1e-9}, type, 0, {g(rng), g(rng), g(rng)});
+    // every fourth body scaled from its type's shape (a feed's size distribution): drawn scaled
+    const double r = (shapes[type].vertices.empty() ? 5e-3 : shapes[type].bounding_radius) * (i % 4 == 3 ? 1.3 : 1.0);
+    s.add_body({0.02 * i, g(rng), 0}, q, r, 1e-3, {1e-9, 1e-9, 1e-9}, type, 0, {g(rng), g(rng), g(rng)});
   }
   const std::string vtu = temp("blaze_polyhedra.vtu");
   write_polyhedra_vtu(vtu, s, shapes);
@@ -158,7 +161,7 @@ BOOST_AUTO_TEST_CASE(polyhedra_vtu_faces_in_world_position) {
     const Eigen::Quaterniond q(s.orientation[i].w, s.orientation[i].x, s.orientation[i].y, s.orientation[i].z);
     const int first = static_cast<int>(x.size() / 3);
     for (const auto& b : shape.vertices) {
-      const Eigen::Vector3d p = Eigen::Vector3d(s.position[i].x, s.position[i].y, s.position[i].z) + q * b;
+      const Eigen::Vector3d p = Eigen::Vector3d(s.position[i].x, s.position[i].y, s.position[i].z) + q * (b * (s.radius[i] / shape.bounding_radius));
       x.insert(x.end(), {p.x(), p.y(), p.z()});
     }
     for (const auto& face : shape.faces) {

@@ -182,8 +182,10 @@ void write_polyhedra_vtu(const std::string& path, const ParticleState<Real>& s, 
     const ConvexShape& shape = shapes[s.type[i]];
     if (shape.vertices.empty()) continue;
     const std::int64_t first = static_cast<std::int64_t>(x.size() / 3);
+    // a particle scaled from its type's shape (a feed's size distribution): its radius over the shape's
+    const double scale = static_cast<double>(s.radius[i]) / shape.bounding_radius;
     for (const auto& b : shape.vertices) {
-      const Vec3<Real> p = s.position[i] + rotate(s.orientation[i], Vec3<Real>{Real(b.x()), Real(b.y()), Real(b.z())});
+      const Vec3<Real> p = s.position[i] + rotate(s.orientation[i], Vec3<Real>{Real(scale * b.x()), Real(scale * b.y()), Real(scale * b.z())});
       x.insert(x.end(), {p.x, p.y, p.z});
     }
     for (const auto& face : shape.faces) {

@@ -82,6 +82,10 @@ struct ParticleTypeSpec {
   std::string shape;           // path of a .shape/.obj file, polyhedra
   double bounding_radius = 0;  // m, polyhedra
   double volume = 0;           // m^3, filled in by the parser (polyhedra: of the scaled shape)
+  // A feed's smallest or largest particle (a size distribution's extreme), added by the parser after
+  // the scene's own types so that the critical step, the impact overlap, the grid and the overlap
+  // checks see it; no particle is of this type (a fed particle is its feed's type, scaled).
+  bool derived = false;
   bool is_sphere() const { return shape.empty(); }
   double size() const { return is_sphere() ? radius : bounding_radius; }
 };
@@ -112,8 +116,9 @@ struct FillSpec {
 // where they overlap nothing, from start to end at `rate` particles/s or `mass_rate` kg/s (the
 // due count or mass, rate x (t - start), is met at every insertion `interval`, what could not be
 // placed staying due and reported), with `velocity` plus a uniform random spread of +- `spread`
-// per component, random orientations for polyhedra, sizes from `size` (spheres; polyhedra take
-// their type's bounding_radius).
+// per component, random orientations for polyhedra, sizes from `size` (radii of spheres, bounding
+// radii of polyhedra: the type's shape scaled to each; PolyhedronShape::Body). Without `size`, the
+// type's own.
 struct FeedSpec {
   std::string name;               // "[[feed]] #k" unless named
   int type = 0;

@@ -103,16 +103,18 @@ World<Real> build_world(const Scene& s) {
 // Body-frame shapes, one per particle type in the scene's order (a sphere type: no vertices).
 inline std::vector<ConvexShape> build_shapes(const Scene& s) {
   std::vector<ConvexShape> shapes;
-  for (const auto& t : s.types) shapes.push_back(t.is_sphere() ? ConvexShape{} : load_scaled_shape(t.shape, t.bounding_radius));
+  for (const auto& t : s.types) shapes.push_back(t.is_sphere() || t.derived ? ConvexShape{} : load_scaled_shape(t.shape, t.bounding_radius));
   return shapes;
 }
 
-// Shape table of a scene with polyhedra: one entry per particle type, in the scene's order.
+// Shape table of a scene with polyhedra: one entry per particle type, in the scene's order (the
+// types derived from feeds' size distributions, last, have none: no particle is of them).
 template <class Real>
 PolyhedronTable<Real> build_shape_table(const Scene& s, const std::vector<ConvexShape>& shapes) {
   PolyhedronTable<Real> table;
   for (std::size_t k = 0; k < s.types.size(); ++k) {
     const ParticleTypeSpec& t = s.types[k];
+    if (t.derived) continue;
     const double rho = s.materials[static_cast<std::size_t>(t.material)].density;
     if (t.is_sphere()) table.add_sphere(t.radius, rho);
     else table.add(shapes[k], rho);

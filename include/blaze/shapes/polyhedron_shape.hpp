@@ -192,16 +192,26 @@ struct PolyhedronShape {
 #endif
   }
 
+  // A body is its type's shape scaled by `scale` about its centre (a feed's size distribution,
+  // scene.hpp's FeedSpec): the particle's radius over the type's bounding radius, exactly 1 for a
+  // particle of the type's own size (the products with it are then exact: an unscaled scene
+  // computes bit for bit what it did before scales existed). Lengths scale by s, mass by s^3 and
+  // the principal moments by s^5 (same density); normals, edges' Gauss-map arcs and the feature
+  // topology do not change, so the table holds one entry per shape, not per size.
   struct Body {
     Vec3<Real> x;
     Quat<Real> q;
     int type;
     Index index;
+    Real scale = 1;
   };
 
+  BLAZE_HD Real scale_of(const ParticleView<Real>& p, Index i) const { return p.radius[i] / data(p.type[i]).bounding_radius; }
   BLAZE_HD Body body(const ParticleView<Real>& p, Index i) const {
-    return {p.position.get(i), p.orientation.get(i), p.type[i], i};
+    return {p.position.get(i), p.orientation.get(i), p.type[i], i, scale_of(p, i)};
   }
+  // The body's bounding radius (m).
+  BLAZE_HD Real radius_of(const Body& b) const { return data(b.type).bounding_radius * b.scale; }
 
   BLAZE_HD bool is_sphere(const Body& b) const { return data(b.type).vertex_count == 0; }
 
@@ -212,25 +222,28 @@ struct PolyhedronShape {
   BLAZE_HD Geometry collide(const Body& a, const Body& b) const {
     if (is_sphere(a) || is_sphere(b)) {
       if (is_sphere(a) && is_sphere(b))
-        return Geometry::of(SphereShape{}.collide(SphereShape::Body<Real>{a.x, data(a.type).bounding_radius, a.index},
-                                                  SphereShape::Body<Real>{b.x, data(b.type).bounding_radius, b.index}));
-      if (is_sphere(b)) return Geometry::of(polyhedron_sphere(a, b.x, data(b.type).bounding_radius));
-      ContactGeometry<Real> g = polyhedron_sphere(b, a.x, data(a.type).bounding_radius);
+        return Geometry::of(SphereShape{}.collide(SphereShape::Body<Real>{a.x, radius_of(a), a.index},
+                                                  SphereShape::Body<Real>{b.x, radius_of(b), b.index}));
+      if (is_sphere(b)) return Geometry::of(polyhedron_sphere(a, b.x, radius_of(b)));
+      ContactGeometry<Real> g = polyhedron_sphere(b, a.x, radius_of(a));
       g.normal = -g.normal;
       return Geometry::of(g);
     }
     return polyhedron_polyhedron(a, b);
   }
 
-  // Normal from the polyhedron towards the sphere of centre c, radius r.
-  BLAZE_HD ContactGeometry<Real> polyhedron_sphere(const Body& a, const Vec3<Real>& c, Real r) const {
+  // Normal from the polyhedron towards the sphere of centre c, radius r_world. The test runs in
+  // A's body frame at A's table size (lengths over a.scale: the sphere's centre and radius), and
+  // its lengths are scaled back at the end.
+  BLAZE_HD ContactGeometry<Real> polyhedron_sphere(const Body& a, const Vec3<Real>& c, Real r_world) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = data(a.type);
     const Vec3<Real> d = c - a.x;
-    const Real reach = A.bounding_radius + r;
-    if (!(norm2(d) < reach * reach)) return ContactGeometry<Real>::none();
+    if (!(norm2(d) < (radius_of(a) + r_world) * (radius_of(a) + r_world))) return ContactGeometry<Real>::none();
+    const Real unscale = Real(1) / a.scale;
+    const Real r = r_world * unscale, reach = A.bounding_radius + r;
     const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
-    const Vec3<Real> cl = ra.transpose_times(d);
+    const Vec3<Real> cl = ra.transpose_times(d) * unscale;
     const Real tol = Real(1e-9) * reach;
     int f_max = 0;
     Real s_max = dot(A.normal[0], cl) - A.offset[0];
@@ -265,9 +278,9 @@ struct PolyhedronShape {
       n = (cl - nearest) * (Real(1) / best);
       gap = best;
     }
-    const Real overlap = r - gap;
-    const Vec3<Real> point = cl - n * (Real(0.5) * (r + gap));  // middle of the overlap
-    return {true, ra * n, overlap, a.x + ra * point, r * A.bounding_radius / reach, ContactKind::vertex_face};
+    const Real overlap = (r - gap) * a.scale;
+    const Vec3<Real> point = (cl - n * (Real(0.5) * (r + gap))) * a.scale;  // middle of the overlap
+    return {true, ra * n, overlap, a.x + ra * point, r * A.bounding_radius / reach * a.scale, ContactKind::vertex_face};
   }
 
   // The test runs in A's centre with B's axes: B's vertices (+ u), normals and edge arcs are read
@@ -275,18 +288,21 @@ struct PolyhedronShape {
   // by r = R_B^T R_A one at a time. Only the edge sets (ArcSets) stay per thread: B's vertices and
   // planes, once held in per-thread arrays (896 B), lived in local memory and were most of the
   // kernel's DRAM traffic (issue 6, Nsight Compute: 13-15 GB per launch at 1e6 bodies, now 2-4).
+  // Scales (Body): the table's vertices and offsets times sa or sb where they are read (a minimum
+  // over a body's vertices once, after the minimum); directions need none.
   BLAZE_HD Geometry polyhedron_polyhedron(const Body& a, const Body& b) const {
     using namespace polyhedron_detail;
     const PolyhedronData<Real>& A = data(a.type);
     const PolyhedronData<Real>& B = data(b.type);
+    const Real sa = a.scale, sb = b.scale;
     const Vec3<Real> d = b.x - a.x;
-    const Real reach = A.bounding_radius + B.bounding_radius;
+    const Real reach = A.bounding_radius * sa + B.bounding_radius * sb;
     if (!(norm2(d) < reach * reach)) return Geometry::none();
     const Mat3<Real> rb = Mat3<Real>::rotation(b.q);
     const Mat3<Real> r = rb.transpose_times(Mat3<Real>::rotation(a.q));  // A's body frame -> B's axes
     const Vec3<Real> u = rb.transpose_times(d);                          // B's centre
-    const auto vertex_b = [&](int k) { return B.vertex[k] + u; };
-    const auto offset_b = [&](int f) { return B.offset[f] + dot(B.normal[f], u); };
+    const auto vertex_b = [&](int k) { return B.vertex[k] * sb + u; };
+    const auto offset_b = [&](int f) { return B.offset[f] * sb + dot(B.normal[f], u); };
     // Face axes of A: min over B's vertices of (r n).(v + u) - h; then of B: min over A's
     // vertices of n.(r v) - h_B = (r^T n).v - h_B.
     Real best = -reach;
@@ -295,7 +311,7 @@ struct PolyhedronShape {
       const Vec3<Real> m = r * A.normal[f];
       Real s = dot(m, B.vertex[0]);
       for (int k = 1; k < B.vertex_count; ++k) s = min_r(s, dot(m, B.vertex[k]));
-      s += dot(m, u) - A.offset[f];
+      s = s * sb + (dot(m, u) - A.offset[f] * sa);
       if (s > Real(0)) return Geometry::none();
       if (s > best) best = s, kind = 0, index = f;
     }
@@ -303,7 +319,7 @@ struct PolyhedronShape {
       const Vec3<Real> m = r.transpose_times(B.normal[f]);
       Real s = dot(m, A.vertex[0]);
       for (int k = 1; k < A.vertex_count; ++k) s = min_r(s, dot(m, A.vertex[k]));
-      s -= offset_b(f);
+      s = s * sa - offset_b(f);
       if (s > Real(0)) return Geometry::none();
       if (s > best) best = s, kind = 1, index = f;
     }
@@ -314,6 +330,7 @@ struct PolyhedronShape {
     // The separation along the axis of edges ea, eb (if they are not parallel); false: separated.
     const auto edge_axis_test = [&](int ea, int eb, const Vec3<Real>& a0, const Vec3<Real>& da) {
       const Vec3<Real> b0 = vertex_b(B.edge_vertex[eb][0]);
+      // (B's edge direction at table size: only its direction counts, the parallel test is relative)
       const Vec3<Real> db = B.vertex[B.edge_vertex[eb][1]] - B.vertex[B.edge_vertex[eb][0]];
       Vec3<Real> n = cross(da, db);
       const Real len2 = norm2(n);
@@ -327,8 +344,8 @@ struct PolyhedronShape {
     };
     // A's edge ea turned into B's axes: first vertex and direction.
     const auto edge_of_a = [&](int ea, Vec3<Real>& a0, Vec3<Real>& da) {
-      a0 = r * A.vertex[A.edge_vertex[ea][0]];
-      da = r * (A.vertex[A.edge_vertex[ea][1]] - A.vertex[A.edge_vertex[ea][0]]);
+      a0 = (r * A.vertex[A.edge_vertex[ea][0]]) * sa;
+      da = (r * (A.vertex[A.edge_vertex[ea][1]] - A.vertex[A.edge_vertex[ea][0]])) * sa;
     };
     ArcSets sets;
     arc_sets(A, B, r, sets);
@@ -345,7 +362,7 @@ struct PolyhedronShape {
     const int face_kind = kind;
     if (edge_a >= 0 && edge_best > best) best = edge_best, kind = 2;
 
-    const auto vertex_a = [&](int k) { return r * A.vertex[k]; };
+    const auto vertex_a = [&](int k) { return (r * A.vertex[k]) * sa; };
     Vec3<Real> n{0, 0, 0}, point{0, 0, 0};
     ContactPatch<Real> patch;
     Real overlap = -best;
@@ -362,7 +379,7 @@ struct PolyhedronShape {
     } else if (face_kind == 0) {
       const Vec3<Real> m = r * A.normal[index];
       if (kind != 2) n = m;
-      point = incident_point(m, A.offset[index], vertex_b, B.vertex_count, patch);
+      point = incident_point(m, A.offset[index] * sa, vertex_b, B.vertex_count, patch);
     } else {
       if (kind != 2) n = -B.normal[index];
       point = incident_point(B.normal[index], offset_b(index), vertex_a, A.vertex_count, patch);
@@ -382,7 +399,7 @@ struct PolyhedronShape {
           bool in = true;
           const int faces = side == 0 ? A.face_count : B.face_count;
           for (int g = 0; g < faces && in; ++g) {
-            const Real pen = side == 0 ? A.offset[g] - dot(r * A.normal[g], v) : offset_b(g) - dot(B.normal[g], v);
+            const Real pen = side == 0 ? A.offset[g] * sa - dot(r * A.normal[g], v) : offset_b(g) - dot(B.normal[g], v);
             in = pen >= -tol;
             if (pen < nearest) nearest = pen, face = g;
           }
@@ -405,7 +422,7 @@ struct PolyhedronShape {
         patch.count = 0;
       }
     }
-    const Real r_eff = A.bounding_radius * B.bounding_radius / reach;
+    const Real r_eff = (A.bounding_radius * sa) * (B.bounding_radius * sb) / reach;
     Geometry g;
     static_cast<ContactGeometry<Real>&>(g) = {true, rb * n, overlap, a.x + rb * point, r_eff, contact_kind};
     for (int k = 0; k < patch.count; ++k) patch.point[k] = a.x + rb * patch.point[k];
@@ -415,9 +432,10 @@ struct PolyhedronShape {
 
   BLAZE_HD Geometry collide_world(const Body& a, const PlanarPolygon<Real>& w) const {
     const PolyhedronData<Real>& A = data(a.type);
-    if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, A.bounding_radius, w));
+    const Real bound = radius_of(a);
+    if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, bound, w));
     const Real d_com = dot(a.x - w.centroid, w.normal);
-    if (!(d_com > -A.bounding_radius && d_com < A.bounding_radius)) return Geometry::none();
+    if (!(d_com > -bound && d_com < bound)) return Geometry::none();
     Geometry g;
     Real deepest = 0;
     if (d_com > Real(0)) {
@@ -435,7 +453,7 @@ struct PolyhedronShape {
         return past_active_edge(w, cross_at) ? Real(0) : -dk;
       };
       if (penetrating_vertices(a, A, below_inside, point, deepest, g.patch))
-        static_cast<ContactGeometry<Real>&>(g) = {true, -w.normal, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+        static_cast<ContactGeometry<Real>&>(g) = {true, -w.normal, deepest, point, bound, ContactKind::vertex_face};
     }
     // The active rim edges inside the body: an edge against a face (deeper than the vertices' wins).
     if (w.active_edges) {
@@ -447,7 +465,7 @@ struct PolyhedronShape {
         if (!rim_in_body(a, A, ra, w.vertex[k], w.vertex[k + 1 < w.vertex_count ? k + 1 : 0], depth, normal, point) || !(depth > deepest))
           continue;
         deepest = depth;
-        g = Geometry::of(ContactGeometry<Real>{true, normal, depth, point, A.bounding_radius, ContactKind::edge_edge});
+        g = Geometry::of(ContactGeometry<Real>{true, normal, depth, point, bound, ContactKind::edge_edge});
       }
     }
     return deepest > Real(0) ? g : Geometry::none();
@@ -465,18 +483,20 @@ struct PolyhedronShape {
   // A wall's edge e0 -> e1 against the body: its part inside (clipped by the face planes,
   // Cyrus & Beck 1978), and at that part's ends and middle the least depth below a face; the
   // deepest of the three gives the overlap, the point and the normal (that face's, outward: from
-  // the body towards the wall). False when the edge misses the body.
+  // the body towards the wall; faces tied within rounding: their normals' sum). False when the
+  // edge misses the body.
   BLAZE_HD static bool rim_in_body(const Body& a, const PolyhedronData<Real>& A, const Mat3<Real>& ra, const Vec3<Real>& e0,
                                    const Vec3<Real>& e1, Real& depth, Vec3<Real>& normal, Vec3<Real>& point) {
     {  // the edge beyond the bounding sphere: no clipping to do (most edges of a wall)
       const Vec3<Real> e = e1 - e0;
       const Real t = clamp_r(dot(a.x - e0, e) / norm2(e), Real(0), Real(1));
-      if (!(norm2(a.x - (e0 + t * e)) < A.bounding_radius * A.bounding_radius)) return false;
+      const Real bound = A.bounding_radius * a.scale;
+      if (!(norm2(a.x - (e0 + t * e)) < bound * bound)) return false;
     }
     const Vec3<Real> p0 = ra.transpose_times(e0 - a.x), d = ra.transpose_times(e1 - e0);
     Real t0 = 0, t1 = 1;
     for (int f = 0; f < A.face_count && t0 < t1; ++f) {  // inside face f: n.(p0 + t d) <= offset
-      const Real num = A.offset[f] - dot(A.normal[f], p0), den = dot(A.normal[f], d);
+      const Real num = A.offset[f] * a.scale - dot(A.normal[f], p0), den = dot(A.normal[f], d);
       if (den == Real(0)) {
         if (num < Real(0)) return false;
       } else if (den > Real(0)) {
@@ -487,25 +507,34 @@ struct PolyhedronShape {
     }
     if (!(t0 < t1)) return false;
     depth = 0;
+    const Real tie = Real(sizeof(Real) == 4 ? 1e-5 : 1e-9) * A.bounding_radius * a.scale;
     for (const Real t : {t0, Real(0.5) * (t0 + t1), t1}) {
       const Vec3<Real> p = p0 + t * d;
       Real least = Real(0);
       int face = -1;
       for (int f = 0; f < A.face_count; ++f) {
-        const Real df = A.offset[f] - dot(A.normal[f], p);
+        const Real df = A.offset[f] * a.scale - dot(A.normal[f], p);
         if (face < 0 || df < least) least = df, face = f;
       }
-      if (face >= 0 && least > depth) depth = least, normal = ra * A.normal[face], point = a.x + ra * p;
+      if (!(face >= 0 && least > depth)) continue;
+      // Faces within rounding of the least depth share the normal (their sum): the middle of a
+      // chord through a slab (a corn kernel's two flat faces) is exactly as deep below both, and
+      // picking one by rounding turned the normal by the angle between mirror-image faces.
+      Vec3<Real> sum{0, 0, 0};
+      for (int f = 0; f < A.face_count; ++f)
+        if (A.offset[f] * a.scale - dot(A.normal[f], p) <= least + tie) sum += A.normal[f];
+      depth = least, normal = ra * (sum * (Real(1) / norm(sum))), point = a.x + ra * p;
     }
     return depth > Real(0);
   }
 
   BLAZE_HD Geometry collide_world(const Body& a, const Cylinder<Real>& c) const {
     const PolyhedronData<Real>& A = data(a.type);
-    if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, A.bounding_radius, c));
+    const Real bound = radius_of(a);
+    if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, bound, c));
     const Vec3<Real> rel = a.x - c.origin;
     const Vec3<Real> rho = rel - dot(rel, c.axis) * c.axis;
-    if (!(norm(rho) + A.bounding_radius > c.radius)) return Geometry::none();
+    if (!(norm(rho) + bound > c.radius)) return Geometry::none();
     Vec3<Real> point;
     Real deepest;
     const auto beyond_radius = [&](const Vec3<Real>& v) {
@@ -518,7 +547,7 @@ struct PolyhedronShape {
     const Vec3<Real> mr = point - c.origin;
     Vec3<Real> n = mr - dot(mr, c.axis) * c.axis;
     n *= Real(1) / norm(n);
-    static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, A.bounding_radius, ContactKind::vertex_face};
+    static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, bound, ContactKind::vertex_face};
     return g;
   }
 
@@ -534,16 +563,17 @@ struct PolyhedronShape {
   BLAZE_HD void collide_mesh(const Body& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,
                              MeshContacts<Real, K, Geometry>& out) const {
     const PolyhedronData<Real>& A = data(a.type);
+    const Real bound = radius_of(a);
     if (A.vertex_count == 0) {
       MeshContacts<Real, K> points;
-      collide_sphere_mesh(a.x, A.bounding_radius, s, m, pose, points);
-      for (int k = 0; k < points.count; ++k) out.add(Geometry::of(points.contact[k]), points.owner[k], A.bounding_radius);
+      collide_sphere_mesh(a.x, bound, s, m, pose, points);
+      for (int k = 0; k < points.count; ++k) out.add(Geometry::of(points.contact[k]), points.owner[k], bound);
       return;
     }
     const Vec3<Real> xr = pose ? pose->to_reference(a.x) : a.x;
     const Mat3<Real> ra = pose ? pose->rotation.transpose_times(Mat3<Real>::rotation(a.q)) : Mat3<Real>::rotation(a.q);
     Vec3<Real> placed[kMaxVertices];  // the vertices in the mesh's frame, once (not per triangle)
-    for (int k = 0; k < A.vertex_count; ++k) placed[k] = xr + ra * A.vertex[k];
+    for (int k = 0; k < A.vertex_count; ++k) placed[k] = xr + ra * (A.vertex[k] * a.scale);
     const auto vertex = [&](int k) { return placed[k]; };
     int first = 0, last = 0;
     m.bins.cell_of(xr, first, last);
@@ -562,8 +592,8 @@ struct PolyhedronShape {
       const Vec3<Real> n = s.normal[t];
       const Real offset = dot(n, v[0]);
       const Real d_com = dot(xr, n) - offset;
-      if (!(d_com > Real(0) && d_com < A.bounding_radius)) continue;
-      const Real reach = sqrt_r(max_r(norm2(v[1] - v[0]), norm2(v[2] - v[0]))) + A.bounding_radius + sqrt_r(norm2(xr - v[0]));
+      if (!(d_com > Real(0) && d_com < bound)) continue;
+      const Real reach = sqrt_r(max_r(norm2(v[1] - v[0]), norm2(v[2] - v[0]))) + bound + sqrt_r(norm2(xr - v[0]));
       const Real margin = Real(64) * epsilon_r<Real>() * reach * reach;
       std::uint32_t below = 0;
       for (int k = 0; k < A.vertex_count; ++k) {
@@ -592,27 +622,33 @@ struct PolyhedronShape {
         n = pose->turn(n), point = pose->place(point);
         for (int k = 0; k < g.patch.count && k < ContactPatch<Real>::kMaxPoints; ++k) g.patch.point[k] = pose->place(g.patch.point[k]);
       }
-      static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, A.bounding_radius, ContactKind::vertex_face};
-      out.add(g, pl.owner, A.bounding_radius);
+      static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, bound, ContactKind::vertex_face};
+      out.add(g, pl.owner, bound);
     }
   }
 
   // Rotation steps (see the header comment).
   BLAZE_HD Vec3<Real> kick_rotation(const ParticleView<Real>& p, Index i, const Quat<Real>& q, const Vec3<Real>& w,
                                     const Vec3<Real>& torque, Real h) const {
-    return w + inverse_inertia_times(p.type[i], Mat3<Real>::rotation(q), torque * h);
+    return w + inverse_inertia_times(inverse_inertia(p.type[i], scale_of(p, i)), Mat3<Real>::rotation(q), torque * h);
   }
   BLAZE_HD void drift_rotation(const ParticleView<Real>& p, Index i, Quat<Real>& q, Vec3<Real>& w, Real dt) const {
-    const int type = p.type[i];
-    const Vec3<Real> l = inertia_times(type, Mat3<Real>::rotation(q), w);
+    const Vec3<Real> inv = inverse_inertia(p.type[i], scale_of(p, i));
+    const Vec3<Real> l = inertia_times(inv, Mat3<Real>::rotation(q), w);
     const Quat<Real> q_half = integrate_orientation(q, w, Real(0.5) * dt);
-    const Vec3<Real> w_half = inverse_inertia_times(type, Mat3<Real>::rotation(q_half), l);
+    const Vec3<Real> w_half = inverse_inertia_times(inv, Mat3<Real>::rotation(q_half), l);
     q = integrate_orientation(q, w_half, dt);
-    w = inverse_inertia_times(type, Mat3<Real>::rotation(q), l);
+    w = inverse_inertia_times(inv, Mat3<Real>::rotation(q), l);
   }
-  BLAZE_HD Vec3<Real> principal_inertia(Real, std::uint8_t type) const {
-    const Vec3<Real> inv = data(type).inv_inertia;
+  // Principal moments of a body of bounding radius `radius` (host snapshots, the time series' energies).
+  BLAZE_HD Vec3<Real> principal_inertia(Real, Real radius, std::uint8_t type) const {
+    const Vec3<Real> inv = inverse_inertia(type, radius / data(type).bounding_radius);
     return {Real(1) / inv.x, Real(1) / inv.y, Real(1) / inv.z};
+  }
+  // Inverse principal moments (1/(kg m^2)) of the type scaled by s: the table's over s^5.
+  BLAZE_HD Vec3<Real> inverse_inertia(int type, Real s) const {
+    const Real s2 = s * s;
+    return data(type).inv_inertia * (Real(1) / (s2 * s2 * s));
   }
 
  private:
@@ -633,7 +669,7 @@ struct PolyhedronShape {
   BLAZE_HD static bool penetrating_vertices(const Body& a, const PolyhedronData<Real>& A, const Penetration& penetration,
                                             Vec3<Real>& point, Real& deepest, ContactPatch<Real>& patch) {
     const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
-    const auto vertex = [&](int k) { return a.x + ra * A.vertex[k]; };
+    const auto vertex = [&](int k) { return a.x + ra * (A.vertex[k] * a.scale); };
     return patch_of_depths(A, vertex, [&](int k) { return penetration(vertex(k)); }, point, deepest, patch);
   }
   // The same from vertex k's position vertex(k) and depth depth(k) (> 0: penetrating).
@@ -697,27 +733,28 @@ struct PolyhedronShape {
     for (int k = 0; k < patch.count; ++k) patch.weight[k] *= inv;
   }
 
-  // R diag(I^-1) R^T v and R diag(I) R^T v.
-  BLAZE_HD Vec3<Real> inverse_inertia_times(int type, const Mat3<Real>& r, const Vec3<Real>& v) const {
-    const Vec3<Real> inv = data(type).inv_inertia;
+  // R diag(I^-1) R^T v and R diag(I) R^T v, from the inverse principal moments inv.
+  BLAZE_HD static Vec3<Real> inverse_inertia_times(const Vec3<Real>& inv, const Mat3<Real>& r, const Vec3<Real>& v) {
     const Vec3<Real> b = r.transpose_times(v);
     return r * Vec3<Real>{b.x * inv.x, b.y * inv.y, b.z * inv.z};
   }
-  BLAZE_HD Vec3<Real> inertia_times(int type, const Mat3<Real>& r, const Vec3<Real>& v) const {
-    const Vec3<Real> inv = data(type).inv_inertia;
+  BLAZE_HD static Vec3<Real> inertia_times(const Vec3<Real>& inv, const Mat3<Real>& r, const Vec3<Real>& v) {
     const Vec3<Real> b = r.transpose_times(v);
     return r * Vec3<Real>{b.x / inv.x, b.y / inv.y, b.z / inv.z};
   }
 };
 
-// Adds a polyhedron of table type `type` to a particle state.
+// Adds a polyhedron of table type `type` to a particle state, of bounding radius `radius` (m; 0:
+// the type's own), scaled from the type's: mass s^3, principal moments s^5 (PolyhedronShape::Body).
 template <class Real>
 void add_polyhedron(ParticleState<Real>& s, const PolyhedronTable<Real>& table, int type, const Vec3<Real>& x,
                     const Quat<Real>& q, std::uint8_t material, const Vec3<Real>& v = {0, 0, 0},
-                    const Vec3<Real>& w = {0, 0, 0}) {
+                    const Vec3<Real>& w = {0, 0, 0}, Real radius = 0) {
   const PolyhedronData<Real>& d = table.type[type];
-  const Vec3<Real> inertia{Real(1) / d.inv_inertia.x, Real(1) / d.inv_inertia.y, Real(1) / d.inv_inertia.z};
-  s.add_body(x, q, d.bounding_radius, d.mass, inertia, static_cast<std::uint8_t>(type), material, v, w);
+  if (radius == Real(0)) radius = d.bounding_radius;
+  const Real k = radius / d.bounding_radius, k3 = k * k * k, k5 = k3 * k * k;
+  const Vec3<Real> inertia{k5 / d.inv_inertia.x, k5 / d.inv_inertia.y, k5 / d.inv_inertia.z};
+  s.add_body(x, q, radius, d.mass * k3, inertia, static_cast<std::uint8_t>(type), material, v, w);
 }
 
 }  // namespace blaze

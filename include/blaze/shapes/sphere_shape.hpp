@@ -65,7 +65,7 @@ struct SphereShape {
   }
   // Principal moments (host snapshots, the time series' energies).
   template <class Real>
-  BLAZE_HD Vec3<Real> principal_inertia(Real inv_inertia, std::uint8_t) const {
+  BLAZE_HD Vec3<Real> principal_inertia(Real inv_inertia, Real, std::uint8_t) const {
     const Real i = Real(1) / inv_inertia;
     return {i, i, i};
   }
