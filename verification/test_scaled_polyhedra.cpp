@@ -140,7 +140,7 @@ BOOST_AUTO_TEST_CASE(a_run_of_scaled_bodies_is_the_run_of_scaled_shapes) {
   w.cylinders.push_back(Cylinder<double>::make({0, -0.05, 0}, {0, 1, 0}, 0.09, 0.3, 1));
   TriangleMesh valley;
   valley.vertices = {{0.02, -0.04, -0.1}, {0.02, -0.04, 0.1}, {0.08, 0.02, -0.1}, {0.08, 0.02, 0.1}, {-0.04, 0.02, -0.1}, {-0.04, 0.02, 0.1}};
-  valley.triangles = {{0, 2, 3}, {0, 3, 1}, {0, 1, 5}, {0, 5, 4}};
+  valley.triangles = {{0, 3, 2}, {0, 1, 3}, {0, 5, 1}, {0, 4, 5}};  // normals up, into the valley
   w.meshes.push_back({"valley", valley, 1});
   // the same bodies: the table's 8 mm types scaled by 1/2 or 2, or types of those sizes
   PolyhedronShape<double> unit, pre;
@@ -173,7 +173,8 @@ BOOST_AUTO_TEST_CASE(a_run_of_scaled_bodies_is_the_run_of_scaled_shapes) {
   Simulation<DefaultSpace, PolyhedronShape<double>, Law, VelocityVerlet, ContactPointVelocity, FullFeatures> sb(p, one_law(law), w, b, pre);
   sa.run(80000), sb.run(80000);  // 0.16 s: the bodies reach the floor, the valley and the drum
   const auto ra = sa.state(), rb = sb.state();
-  BOOST_TEST_REQUIRE(ra.size() == rb.size());
+  BOOST_TEST_REQUIRE(ra.size() == 8u);  // none lost through a wall
+  BOOST_TEST_REQUIRE(rb.size() == 8u);
   long different = 0;
   double moved = 0;
   for (std::size_t i = 0; i < ra.size(); ++i) {

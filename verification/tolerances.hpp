@@ -554,6 +554,13 @@ constexpr double mesh_walls_valley_rest_cube = 1e-4;
 // 0.3): measured 2.5e-9 (2026-12), what is left of their motion; 1e-6.
 constexpr double mesh_walls_resting_load = 1e-6;
 
+// A cube dropped flat on a 15-degree ridge of a mesh (test_mesh_rims.cpp), at rest: the depth the
+// ridge reaches into it over its static overlap m g / k. Held by the ridge's edge contact (or
+// tipped onto a slope, the ridge under its face) it is ~1; without the edge contact the ridge cut
+// in to where the slopes held the vertices, 0.27 h (~800 static overlaps); with the edge under a
+// flush face left out of the plane's patch, 91. Measured 0.97 (2026-12); 5.
+constexpr double mesh_rim_ridge_depth = 5;
+
 // Feeding (test_feeding.cpp). The 99% quantile of the Kolmogorov distribution: the KS distance
 // of n draws from their own CDF exceeds 1.63 / sqrt(n) with probability 1% (Kolmogorov 1933;
 // Smirnov 1948), with n the effective size (sum w)^2 / sum w^2 of a mass-weighted sample. The

@@ -165,6 +165,10 @@ struct PolyhedronShape {
   // An edge-pair axis that separates by at most this share of the best face axis's penetration
   // more than that face keeps the face's contact point and patch (header comment).
   static constexpr double kFacePreference = 1e-3;
+  // A mesh's rim edge under a face of the body that lies within 1 degree of flat on one of the
+  // edge's planes is no contact of its own (collide_mesh): cos(1 degree).
+  static constexpr double kFlushFace = 0.99984769515639127;
+  static constexpr int kFlushPoints = 4;  // such edges' ends one plane's patch takes (two edges)
   // Contact kernels: at least this many blocks of 256 per SM (launch.hpp): 4 caps them at 64
   // registers. BLAZE_POLYHEDRON_MIN_BLOCKS sets it for lever measurements (bench/results/levers/).
 #ifdef BLAZE_POLYHEDRON_MIN_BLOCKS
@@ -480,6 +484,23 @@ struct PolyhedronShape {
     }
     return false;
   }
+  // The part [t0, t1] of the segment p0 + t d (t in [0, 1], the body's frame from its centre)
+  // inside the body: clipped by the face planes (Cyrus & Beck 1978). False: it misses the body.
+  BLAZE_HD static bool clip_to_body(const Body& a, const PolyhedronData<Real>& A, const Vec3<Real>& p0, const Vec3<Real>& d, Real& t0,
+                                    Real& t1) {
+    t0 = 0, t1 = 1;
+    for (int f = 0; f < A.face_count && t0 < t1; ++f) {  // inside face f: n.(p0 + t d) <= offset
+      const Real num = A.offset[f] * a.scale - dot(A.normal[f], p0), den = dot(A.normal[f], d);
+      if (den == Real(0)) {
+        if (num < Real(0)) return false;
+      } else if (den > Real(0)) {
+        t1 = min_r(t1, num / den);
+      } else {
+        t0 = max_r(t0, num / den);
+      }
+    }
+    return t0 < t1;
+  }
   // A wall's edge e0 -> e1 against the body: its part inside (clipped by the face planes,
   // Cyrus & Beck 1978), and at that part's ends and middle the least depth below a face; the
   // deepest of the three gives the overlap, the point and the normal (that face's, outward: from
@@ -495,17 +516,7 @@ struct PolyhedronShape {
     }
     const Vec3<Real> p0 = ra.transpose_times(e0 - a.x), d = ra.transpose_times(e1 - e0);
     Real t0 = 0, t1 = 1;
-    for (int f = 0; f < A.face_count && t0 < t1; ++f) {  // inside face f: n.(p0 + t d) <= offset
-      const Real num = A.offset[f] * a.scale - dot(A.normal[f], p0), den = dot(A.normal[f], d);
-      if (den == Real(0)) {
-        if (num < Real(0)) return false;
-      } else if (den > Real(0)) {
-        t1 = min_r(t1, num / den);
-      } else {
-        t0 = max_r(t0, num / den);
-      }
-    }
-    if (!(t0 < t1)) return false;
+    if (!clip_to_body(a, A, p0, d, t0, t1)) return false;
     depth = 0;
     const Real tie = Real(sizeof(Real) == 4 ? 1e-5 : 1e-9) * A.bounding_radius * a.scale;
     for (const Real t : {t0, Real(0.5) * (t0 + t1), t1}) {
@@ -552,16 +563,32 @@ struct PolyhedronShape {
   }
 
   // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp). A sphere type: its bounding
-  // sphere's, merged per surface point. A polyhedron: as against a planar wall (vertices below the
-  // plane whose foot lies inside, the patch of the deepest and those within 1% of it), with the
-  // mesh's triangles grouped by plane: a vertex below a plane counts once for it however many of
-  // its triangles hold its foot (a tessellated floor pushes as one polygon), and each plane the
-  // body presses gives one contact (a valley: two). Like a planar wall, a mesh's edges and
-  // vertices pushing into a face of the body are not seen (vertex-face contacts only). In the
-  // mesh's frame (pose), turned back.
+  // sphere's, merged per surface point. A polyhedron: as against a planar wall, with the mesh's
+  // triangles grouped by plane, each plane a wall (a tessellated floor pushes as one polygon; a
+  // valley gives two contacts):
+  //   vertices  below the plane whose foot lies in one of its triangles, counted once however many
+  //             hold it, and only if they came through the surface: the line from the centre
+  //             crosses the plane in one of its triangles, or outside them only across edges that
+  //             are not rims (a vertex that came round a rim edge is that edge's contact); the
+  //             patch of the deepest and those within 1% of it;
+  //   rim edges a triangle's open edges and its convex ones (the neighbour's far vertex below the
+  //             plane: a ridge, an orifice's lip) inside the body (rim_in_body: clipped by the
+  //             faces, its deepest point below one, that face's normal), each edge taken once (from
+  //             the triangle whose plane the centre is in front of; both: the lower index; an open
+  //             edge also from behind its plane: a lip met from below or beyond), each
+  //             its own contact (edge-face: a ridge pushing into a face of the body), unless that
+  //             face lies within 1 degree of flat on a plane of the edge (kFlushFace): then the
+  //             edge is part of that plane's contact, its two ends inside the body points of the
+  //             plane's patch at their depth below the face (a face overhanging a table's edge or
+  //             a ridge rests on the edge too; left out, it sank round the edge until it turned
+  //             past the 1 degree, 91 static overlaps deep on a 15-degree ridge).
+  // Flat seams and valleys are not rims. A mesh's vertices pushing into a face of the body meet it
+  // through the edges at them. In the mesh's frame (pose), turned back. (A planar wall keeps the
+  // deeper of its vertex and rim contacts instead: one contact per polygon.)
   template <int K>
   BLAZE_HD void collide_mesh(const Body& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,
                              MeshContacts<Real, K, Geometry>& out) const {
+    using mesh_detail::edge_side;
     const PolyhedronData<Real>& A = data(a.type);
     const Real bound = radius_of(a);
     if (A.vertex_count == 0) {
@@ -572,6 +599,8 @@ struct PolyhedronShape {
     }
     const Vec3<Real> xr = pose ? pose->to_reference(a.x) : a.x;
     const Mat3<Real> ra = pose ? pose->rotation.transpose_times(Mat3<Real>::rotation(a.q)) : Mat3<Real>::rotation(a.q);
+    Body in_frame = a;
+    in_frame.x = xr;
     Vec3<Real> placed[kMaxVertices];  // the vertices in the mesh's frame, once (not per triangle)
     for (int k = 0; k < A.vertex_count; ++k) placed[k] = xr + ra * (A.vertex[k] * a.scale);
     const auto vertex = [&](int k) { return placed[k]; };
@@ -580,11 +609,34 @@ struct PolyhedronShape {
     struct Plane {
       Vec3<Real> n;
       Real offset;
-      std::uint32_t below;  // vertices below the plane with their foot in one of its triangles
-      int owner;            // the first such triangle
+      std::uint32_t below;    // vertices below the plane with their foot in one of its triangles
+      std::uint32_t through;  // vertices below it whose line from the centre crosses it in one of them
+      std::uint32_t rounded;  // ... crosses it outside one of them, across a rim edge
+      int owner;              // the first such triangle
+      int extra;              // rim edges' points under a face flush on it (kFlushFace), and their depths
+      Vec3<Real> extra_point[kFlushPoints];
+      Real extra_depth[kFlushPoints];
     } plane[K];
-    int planes = 0;
+    struct Edge {
+      ContactGeometry<Real> g;  // in the mesh's frame
+      int t, o;                 // the triangle that took it and its neighbour across it (-1: open)
+      bool flush;               // under a face flush on plane (n, offset): that plane's patch gets its ends
+      Vec3<Real> n, end[2];
+      Real offset, end_depth[2];
+    } edge[K];
+    int planes = 0, edges = 0;
     const Real angle = sizeof(Real) == 4 ? Real(1e-4) : Real(1e-9);
+    // The plane (n, offset)'s group, made if new (owner t); -1: all K taken. (Through a pointer:
+    // nvcc takes a lambda's reference to the array, not yet written, for a use before it is set.)
+    Plane* const groups = plane;
+    const auto group = [&](const Vec3<Real>& n, Real offset, Real reach, int t) {
+      int q = 0;
+      while (q < planes && !(norm2(groups[q].n - n) <= angle * angle && abs_r(groups[q].offset - offset) <= angle * reach)) ++q;
+      if (q < planes) return q;
+      if (planes == K) return -1;
+      groups[planes] = {n, offset, 0u, 0u, 0u, t, 0, {}, {}};
+      return planes++;
+    };
     for (int e = first; e < last; ++e) {
       const int t = m.bins.entry[e];
       const int* tri = s.triangle + 3 * t;
@@ -592,31 +644,119 @@ struct PolyhedronShape {
       const Vec3<Real> n = s.normal[t];
       const Real offset = dot(n, v[0]);
       const Real d_com = dot(xr, n) - offset;
-      if (!(d_com > Real(0) && d_com < bound)) continue;
+      if (!(d_com > -bound && d_com < bound)) continue;
+      const bool in_front = d_com > Real(0);  // behind the plane: only its open edges (a lip met from below)
       const Real reach = sqrt_r(max_r(norm2(v[1] - v[0]), norm2(v[2] - v[0]))) + bound + sqrt_r(norm2(xr - v[0]));
       const Real margin = Real(64) * epsilon_r<Real>() * reach * reach;
-      std::uint32_t below = 0;
-      for (int k = 0; k < A.vertex_count; ++k) {
+      // Edge k (corner k -> k + 1) is a rim: open, or convex (the neighbour's far vertex below this plane).
+      const auto rim = [&](int k) {
+        const int o = s.neighbour[3 * t + k];
+        if (o < 0) return true;
+        const int* other = s.triangle + 3 * o;
+        int far = other[0];
+        for (int j = 1; j < 3; ++j)
+          if (far == tri[k] || far == tri[k + 1 < 3 ? k + 1 : 0]) far = other[j];
+        const Vec3<Real> w = s.vertex[far] - v[k];
+        return dot(n, w) < -angle * sqrt_r(norm2(w));
+      };
+      std::uint32_t below = 0, through = 0, rounded = 0;
+      int rims = -1;  // bit k: edge k is a rim (found when first needed)
+      for (int k = 0; k < A.vertex_count && in_front; ++k) {
         const Vec3<Real> p = vertex(k);
-        if (!(offset - dot(n, p) > Real(0))) continue;
+        const Real dk = dot(n, p) - offset;
+        if (!(dk < Real(0))) continue;
         bool inside = true;
-        for (int j = 0; j < 3 && inside; ++j) inside = dot(p - v[j], cross(n, v[j + 1 < 3 ? j + 1 : 0] - v[j])) >= -margin;
+        for (int j = 0; j < 3 && inside; ++j) inside = edge_side(p, v[j], v[j + 1 < 3 ? j + 1 : 0], n) >= -margin;
         if (inside) below |= 1u << k;
+        // where the line from the centre crosses the plane
+        const Vec3<Real> c = xr + (p - xr) * (d_com / (d_com - dk));
+        bool in = true, round = false;
+        for (int j = 0; j < 3; ++j) {
+          if (edge_side(c, v[j], v[j + 1 < 3 ? j + 1 : 0], n) >= -margin) continue;
+          in = false;
+          if (rims < 0) rims = int(rim(0)) | int(rim(1)) << 1 | int(rim(2)) << 2;
+          round = round || ((rims >> j) & 1);
+        }
+        if (in) through |= 1u << k;
+        if (round) rounded |= 1u << k;
       }
-      if (!below) continue;
-      int q = 0;
-      while (q < planes && !(norm2(plane[q].n - n) <= angle * angle && abs_r(plane[q].offset - offset) <= angle * reach)) ++q;
-      if (q < planes) plane[q].below |= below;
-      else if (planes < K) plane[planes++] = {n, offset, below, t};
-      else ++out.dropped;
+      // the rim edges inside the body, each once, each a contact
+      for (int k = 0; k < 3; ++k) {
+        const Vec3<Real> e0 = v[k], e1 = v[k + 1 < 3 ? k + 1 : 0], ed = e1 - e0;
+        {  // beyond the bounding sphere: most edges (rim_in_body tests it too, after more reads)
+          const Real u = clamp_r(dot(xr - e0, ed) / norm2(ed), Real(0), Real(1));
+          if (!(norm2(xr - (e0 + u * ed)) < bound * bound)) continue;
+        }
+        if (rims < 0) rims = int(rim(0)) | int(rim(1)) << 1 | int(rim(2)) << 2;
+        if (!((rims >> k) & 1)) continue;
+        const int o = s.neighbour[3 * t + k];
+        if (o >= 0 && !in_front) continue;  // a convex edge is met from in front of one of its planes
+        if (o >= 0 && o < t) {  // the neighbour takes it when the centre is in front of it too
+          const Real d_o = dot(xr - s.vertex[s.triangle[3 * o]], s.normal[o]);
+          if (d_o > Real(0) && d_o < bound) continue;
+        }
+        Real depth = 0;
+        Vec3<Real> normal{0, 0, 0}, point{0, 0, 0};
+        if (!rim_in_body(in_frame, A, ra, e0, e1, depth, normal, point)) continue;
+        if (edges == K) {
+          ++out.dropped;
+          continue;
+        }
+        Edge& ed_k = edge[edges++];
+        ed_k.g = {true, normal, depth, point, bound, ContactKind::edge_edge}, ed_k.t = t, ed_k.o = o, ed_k.flush = false;
+        // Under a face flush on this plane or the neighbour's, the edge is part of that plane's
+        // contact: its ends inside the body join the plane's patch, at their depth below that face
+        // (the face overhangs the plane's triangles there: without them it would sink round the edge).
+        const bool on_t = dot(normal, n) < -Real(kFlushFace), on_o = !on_t && o >= 0 && dot(normal, s.normal[o]) < -Real(kFlushFace);
+        if (!on_t && !on_o) continue;
+        ed_k.flush = true;
+        ed_k.n = on_t ? n : s.normal[o];
+        ed_k.offset = on_t ? offset : dot(s.normal[o], s.vertex[s.triangle[3 * o]]);
+        const Vec3<Real> p0 = ra.transpose_times(e0 - xr), dl = ra.transpose_times(ed);
+        Real t0 = 0, t1 = 1;
+        clip_to_body(in_frame, A, p0, dl, t0, t1);
+        int face = 0;  // the flush face: the one whose normal the contact took
+        for (int f = 1; f < A.face_count; ++f)
+          if (dot(ra * A.normal[f], normal) > dot(ra * A.normal[face], normal)) face = f;
+        for (int j = 0; j < 2; ++j) {
+          const Real tj = j == 0 ? t0 : t1;
+          ed_k.end[j] = e0 + ed * tj;
+          ed_k.end_depth[j] = A.offset[face] * a.scale - dot(A.normal[face], p0 + dl * tj);
+        }
+      }
+      if (!below && !through && !rounded) continue;
+      const int q = group(n, offset, reach, t);
+      if (q < 0) {
+        ++out.dropped;
+        continue;
+      }
+      plane[q].below |= below, plane[q].through |= through, plane[q].rounded |= rounded;
+    }
+    // the flush edges' ends join their planes' patches
+    for (int k = 0; k < edges; ++k) {
+      if (!edge[k].flush) continue;
+      const int q = group(edge[k].n, edge[k].offset, bound, edge[k].t);
+      if (q < 0) {
+        ++out.dropped;
+        continue;
+      }
+      for (int j = 0; j < 2 && plane[q].extra < kFlushPoints; ++j)
+        plane[q].extra_point[plane[q].extra] = edge[k].end[j], plane[q].extra_depth[plane[q].extra++] = edge[k].end_depth[j];
     }
     for (int q = 0; q < planes; ++q) {
       const Plane& pl = plane[q];
+      const std::uint32_t counted = pl.below & (pl.through | ~pl.rounded);
+      if (!counted && !pl.extra) continue;
       Geometry g;
       Vec3<Real> point;
       Real deepest;
-      const auto depth = [&](int k) { return (pl.below >> k) & 1u ? pl.offset - dot(pl.n, vertex(k)) : Real(0); };
-      if (!patch_of_depths(A, vertex, depth, point, deepest, g.patch)) continue;
+      const int nv = A.vertex_count;
+      const auto at = [&](int k) { return k < nv ? vertex(k) : pl.extra_point[k - nv]; };
+      const auto depth = [&](int k) {
+        if (k >= nv) return pl.extra_depth[k - nv];
+        return (counted >> k) & 1u ? pl.offset - dot(pl.n, vertex(k)) : Real(0);
+      };
+      if (!patch_of_points(nv + pl.extra, at, depth, point, deepest, g.patch)) continue;
       Vec3<Real> n = -pl.n;
       if (pose) {
         n = pose->turn(n), point = pose->place(point);
@@ -624,6 +764,22 @@ struct PolyhedronShape {
       }
       static_cast<ContactGeometry<Real>&>(g) = {true, n, deepest, point, bound, ContactKind::vertex_face};
       out.add(g, pl.owner, bound);
+    }
+    // The edges' contacts, keyed (the history's key: the owner triangle) by a triangle no contact
+    // of the group holds: the one that took the edge, its neighbour, or another listed near.
+    for (int k = 0; k < edges; ++k) {
+      if (edge[k].flush) continue;
+      const auto taken = [&](int u) {
+        for (int j = 0; j < out.count; ++j)
+          if (out.owner[j] == u) return true;
+        return false;
+      };
+      int owner = edge[k].t;
+      if (taken(owner) && edge[k].o >= 0) owner = edge[k].o;
+      for (int e = first; e < last && taken(owner); ++e) owner = m.bins.entry[e];
+      ContactGeometry<Real> c = edge[k].g;
+      if (pose) c.normal = pose->turn(c.normal), c.point = pose->place(c.point);
+      out.add(Geometry::of(c), owner, bound);
     }
   }
 
@@ -676,14 +832,20 @@ struct PolyhedronShape {
   template <class Vertex, class Depth>
   BLAZE_HD static bool patch_of_depths(const PolyhedronData<Real>& A, const Vertex& vertex, const Depth& depth, Vec3<Real>& point,
                                        Real& deepest, ContactPatch<Real>& patch) {
+    return patch_of_points(A.vertex_count, vertex, depth, point, deepest, patch);
+  }
+  // The same over `points` points (a polyhedron's vertices, and more: collide_mesh).
+  template <class Vertex, class Depth>
+  BLAZE_HD static bool patch_of_points(int points, const Vertex& vertex, const Depth& depth, Vec3<Real>& point, Real& deepest,
+                                       ContactPatch<Real>& patch) {
     deepest = 0;
-    for (int k = 0; k < A.vertex_count; ++k) deepest = max_r(deepest, depth(k));
+    for (int k = 0; k < points; ++k) deepest = max_r(deepest, depth(k));
     if (!(deepest > Real(0))) return false;
     const Real floor = Real(0.99) * deepest;
     Vec3<Real> sum{0, 0, 0};
     Real weight = 0;
     int count = 0;
-    for (int k = 0; k < A.vertex_count; ++k) {
+    for (int k = 0; k < points; ++k) {
       const Real w = depth(k) - floor;
       if (w > Real(0)) {
         const Vec3<Real> v = vertex(k);
