@@ -267,6 +267,15 @@ fig-beverloo: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
 	tools/beverloo.sh $(BUILD)/$(RUN_BACKEND)/study_hopper
 
+# make fig-2.17: 13 824 corn kernels poured into a 60-degree hopper (an STL per orifice,
+# studies/hopper/make_hopper_stl.py) and discharged through orifices of 2 to 4 kernel lengths, three
+# seeds each: the runs that arch -> data/hopper/corn/, studies/hopper/corn.md, plots/fig-2.17.png
+# (tools/corn_arching.sh; a GPU target).
+.PHONY: fig-2.17
+fig-2.17: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
+	tools/corn_arching.sh $(BUILD)/$(RUN_BACKEND)/study_hopper
+
 # ---- tumbling mills (studies/mill) ---------------------------------------------------------------
 # make table-4.4: the thesis's Table 4.4 (3D lab mill: 20% and 30% filling, 14/22/32 rpm) with the
 # history-free law and Hertz-Mindlin -> data/mill/table-4.4/, studies/mill/table-4.4.md,
