@@ -335,6 +335,9 @@ BOOST_AUTO_TEST_CASE(cubes_are_fed_with_a_scale_distribution) {
     const std::string rate = c.by_mass ? "mass_rate = 0.3\n" : "rate = 1500\n";
     const Scene s = parse_scene(feed_scene("type = \"cube\"\n" + rate + "end_time = 0.1\n" + kBoxRegion + c.size, "", "", cube), "cubes.toml");
     BOOST_TEST(s.types.size() == 3u);  // the cube and its feed's smallest and largest
+    BOOST_TEST(s.types[1].volume < s.types[0].volume);  // the smallest cube, scaled: (r / R)^3 of the volume
+    BOOST_TEST(s.types[1].volume == s.types[0].volume * std::pow(s.types[1].bounding_radius / s.types[0].bounding_radius, 3),
+               boost::test_tools::tolerance(tol::scaled_mass_properties));
     Run run(s);
     BOOST_TEST(run.shape.table.count == 1);  // one shape: the sizes are scales of it
     double worst_gap = 1e300;
