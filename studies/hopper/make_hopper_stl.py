@@ -7,7 +7,11 @@ as a rim edge (polyhedron_shape.hpp collide_mesh), spheres as edge contacts (mes
   make_hopper_stl.py --width 0.16 --height 0.3 --angle 60 --orifice 0.03 --out hopper.stl"""
 import argparse
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from stl_ascii import normal, write_stl  # noqa: E402
 
 
 def hopper_triangles(width, height, angle, orifice):
@@ -28,13 +32,6 @@ def hopper_triangles(width, height, angle, orifice):
     return tris, rise
 
 
-def normal(t):
-    u = [t[1][i] - t[0][i] for i in range(3)]
-    v = [t[2][i] - t[0][i] for i in range(3)]
-    n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
-    length = math.sqrt(sum(c * c for c in n))
-    return [c / length for c in n]
-
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -47,15 +44,7 @@ def main():
     if not (0 < a.orifice < a.width and a.height > 0 and 10 <= a.angle <= 89):
         sys.exit("make_hopper_stl.py: need 0 < orifice < width, height > 0, 10 <= angle <= 89")
     tris, rise = hopper_triangles(a.width, a.height, a.angle, a.orifice)
-    with open(a.out, "w") as f:
-        f.write("solid hopper\n")
-        for t in tris:
-            n = normal(t)
-            f.write(f"  facet normal {n[0]:.9e} {n[1]:.9e} {n[2]:.9e}\n    outer loop\n")
-            for v in t:
-                f.write(f"      vertex {v[0]:.9e} {v[1]:.9e} {v[2]:.9e}\n")
-            f.write("    endloop\n  endfacet\n")
-        f.write("endsolid hopper\n")
+    write_stl(a.out, "hopper", tris)
     print(f"{a.out}: {len(tris)} triangles (hopper {a.width} m wide, walls at {a.angle} deg rising {rise:.4f} m, "
           f"box to {rise + a.height:.4f} m, orifice {a.orifice} m)")
 

@@ -8,7 +8,11 @@ into the silo (up from the floor, towards the axis from the shell).
   make_silo_stl.py --radius 0.075 --height 0.35 --orifice-radius 0.02 --segments 96 --out silo.stl"""
 import argparse
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from stl_ascii import write_stl  # noqa: E402
 
 
 def silo_triangles(radius, height, orifice_radius, segments):
@@ -35,13 +39,6 @@ def silo_triangles(radius, height, orifice_radius, segments):
     return tris
 
 
-def normal(t):
-    u = [t[1][i] - t[0][i] for i in range(3)]
-    v = [t[2][i] - t[0][i] for i in range(3)]
-    n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
-    length = math.sqrt(sum(c * c for c in n))
-    return [c / length for c in n]
-
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -54,15 +51,7 @@ def main():
     if not (0 < a.orifice_radius < a.radius and a.height > 0 and a.segments >= 8):
         sys.exit("make_silo_stl.py: need 0 < orifice-radius < radius, height > 0, segments >= 8")
     tris = silo_triangles(a.radius, a.height, a.orifice_radius, a.segments)
-    with open(a.out, "w") as f:
-        f.write("solid silo\n")
-        for t in tris:
-            n = normal(t)
-            f.write(f"  facet normal {n[0]:.9e} {n[1]:.9e} {n[2]:.9e}\n    outer loop\n")
-            for v in t:
-                f.write(f"      vertex {v[0]:.9e} {v[1]:.9e} {v[2]:.9e}\n")
-            f.write("    endloop\n  endfacet\n")
-        f.write("endsolid silo\n")
+    write_stl(a.out, "silo", tris)
     print(f"{a.out}: {len(tris)} triangles (silo R = {a.radius} m, H = {a.height} m, orifice r = {a.orifice_radius} m)")
 
 
