@@ -7,6 +7,8 @@
 //   the right depth: the edge under a flush face is not a second one);
 // - a vertex that came round the open edge (the line from the centre crosses the table's plane
 //   beyond it) is not pushed up through the table;
+// - a cube laid flat over a table's edge (0.8 of its half-width beyond it), on a mesh or a planar
+//   table, settles flat (the edge under the face is part of the table's contact);
 // - a cube dropped flat onto a roof's ridge (two 15-degree slopes: a convex edge) is held by the
 //   ridge: at rest the ridge reaches at most a few static overlaps into it (without the edge
 //   contact the ridge cut in to where the slopes held its vertices, ~27% of the half edge).
@@ -170,6 +172,40 @@ BOOST_AUTO_TEST_CASE(a_cube_dropped_on_a_ridge_is_held_by_it) {
   check_at_most({kCase, "cube dropped flat on a 15-degree ridge, at rest: the ridge's depth in it over m g / k", "-",
                  "held by the ridge (tol::mesh_rim_ridge_depth)"},
                 depth / static_overlap, tol::mesh_rim_ridge_depth);
+}
+
+// A cube laid flat over a table's edge, its centre over the table by 0.2 h (0.8 h of its face beyond
+// the edge), settles flat: the edge under the face is part of the table's contact, on a mesh table
+// (an open edge) and on a planar polygon (an active rim edge) alike.
+BOOST_AUTO_TEST_CASE(a_cube_over_a_table_edge_rests_flat) {
+  PolyhedronShape<double> shape;
+  shape.table.add(load_scaled_shape("data/shapes/cube.shape", 0.01), 2500);
+  const double h = 0.01 / std::sqrt(3.0);
+  auto normal = LinearSpringDashpot<double>::from_restitution(2e4, 0.2);
+  normal.no_tension = true;
+  const LinearSpringLaw<double> law{normal, TangentialSpring<double>::linear(0.6, 2.0 / 7.0 * 2e4, normal.beta)};
+  const Quat<double> flat = face_turn(shape.table.type[0], {0, -1, 0}, {0, 0, 1});
+  for (const bool as_mesh : {true, false}) {
+    World<double> world;
+    if (as_mesh) world.meshes.push_back({"table", table(), 1});
+    else world.polygons.push_back(PlanarPolygon<double>::make({{-0.05, 0, 0.05}, {0.05, 0, 0.05}, {0.05, 0, -0.05}, {-0.05, 0, -0.05}}, 1));
+    ParticleState<double> p;
+    add_polyhedron(p, shape.table, 0, Vec3<double>{0.05 - 0.2 * h, h + 1e-4, 0}, flat, 0);
+    Simulation<DefaultSpace, PolyhedronShape<double>, LinearSpringLaw<double>, VelocityVerlet, ContactPointVelocity, FullFeatures> sim(
+        params<double>(2e-6, {0, -9.81, 0}, 0.2, 1e-3), one_law(law), world, p, shape);
+    sim.run(150000);  // 0.3 s
+    const auto st = sim.state();
+    BOOST_TEST_REQUIRE(st.size() == 1u);
+    // the tilt: the angle between the face that was down and -y
+    const Vec3<double> down = rotate(st.orientation[0], shape.table.type[0].normal[0]);  // face_turn took normal[0] down
+    const double tilt = std::acos(std::fmin(1.0, -down.y)) * 180 / kPi;
+    const double static_overlap = 2500 * 8 * h * h * h * 9.81 / 2e4;
+    BOOST_TEST_MESSAGE((as_mesh ? "mesh" : "planar") << " table: tilt " << tilt << " deg, centre " << st.position[0].x << ", "
+                                                     << st.position[0].y - h << " (m g / k " << static_overlap << "), speed " << norm(st.velocity[0]));
+    check_at_most({kCase, std::string("cube flat over the edge of a ") + (as_mesh ? "mesh" : "planar") + " table, at rest: tilt (degrees)", "-",
+                   "rests flat on the table and its edge (tol::mesh_rim_flat_tilt)"},
+                  tilt, tol::mesh_rim_flat_tilt);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -440,6 +440,25 @@ struct PolyhedronShape {
     if (A.vertex_count == 0) return Geometry::of(collide_sphere(a.x, bound, w));
     const Real d_com = dot(a.x - w.centroid, w.normal);
     if (!(d_com > -bound && d_com < bound)) return Geometry::none();
+    const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
+    // The active rim edges inside the body: the deepest is an edge-face contact (deeper than the
+    // vertices' wins); one under a face flush on the plate (kFlushFace) is part of the plate's
+    // contact instead, its ends inside the body points of the vertices' patch (as a mesh's rim
+    // edges, collide_mesh: a face overhanging an orifice's lip rests on the lip too).
+    Vec3<Real> extra_point[kFlushPoints];
+    Real extra_depth[kFlushPoints];
+    int extra = 0;
+    Real rim_depth = 0;
+    Vec3<Real> rim_normal{0, 0, 0}, rim_point{0, 0, 0};
+    for (int k = 0; k < w.vertex_count && w.active_edges; ++k) {
+      if (!((w.active_edges >> k) & 1u)) continue;
+      const Vec3<Real> e0 = w.vertex[k], e1 = w.vertex[k + 1 < w.vertex_count ? k + 1 : 0];
+      Real depth = 0;
+      Vec3<Real> normal{0, 0, 0}, point{0, 0, 0};
+      if (!rim_in_body(a, A, ra, e0, e1, depth, normal, point)) continue;
+      if (d_com > Real(0) && dot(normal, w.normal) < -Real(kFlushFace)) flush_ends(a, A, ra, e0, e1, normal, extra_point, extra_depth, extra);
+      else if (depth > rim_depth) rim_depth = depth, rim_normal = normal, rim_point = point;
+    }
     Geometry g;
     Real deepest = 0;
     if (d_com > Real(0)) {
@@ -447,7 +466,7 @@ struct PolyhedronShape {
       // A vertex below the plane counts when its foot lies inside and it came through the plate,
       // not round one of its active rim edges: the line from the centre to it crosses the plane
       // inside, or outside only past inactive edges (a seam with a coplanar neighbour, which the
-      // floor continues). Round an active edge the rim contact below holds it, at the true depth
+      // floor continues). Round an active edge the rim contact holds it, at the true depth
       // (the vertex's depth below the plane there is no overlap: a dodecahedron tipping into an
       // orifice read up to 65% of its radius).
       const auto below_inside = [&](const Vec3<Real>& v) {
@@ -456,23 +475,35 @@ struct PolyhedronShape {
         const Vec3<Real> cross_at = a.x + (v - a.x) * (d_com / (d_com - dk));
         return past_active_edge(w, cross_at) ? Real(0) : -dk;
       };
-      if (penetrating_vertices(a, A, below_inside, point, deepest, g.patch))
+      const int nv = A.vertex_count;
+      const auto at = [&](int k) { return k < nv ? a.x + ra * (A.vertex[k] * a.scale) : extra_point[k - nv]; };
+      const auto depth = [&](int k) { return k < nv ? below_inside(at(k)) : extra_depth[k - nv]; };
+      if (patch_of_points(nv + extra, at, depth, point, deepest, g.patch))
         static_cast<ContactGeometry<Real>&>(g) = {true, -w.normal, deepest, point, bound, ContactKind::vertex_face};
     }
-    // The active rim edges inside the body: an edge against a face (deeper than the vertices' wins).
-    if (w.active_edges) {
-      const Mat3<Real> ra = Mat3<Real>::rotation(a.q);
-      for (int k = 0; k < w.vertex_count; ++k) {
-        if (!((w.active_edges >> k) & 1u)) continue;
-        Real depth = 0;
-        Vec3<Real> normal{0, 0, 0}, point{0, 0, 0};
-        if (!rim_in_body(a, A, ra, w.vertex[k], w.vertex[k + 1 < w.vertex_count ? k + 1 : 0], depth, normal, point) || !(depth > deepest))
-          continue;
-        deepest = depth;
-        g = Geometry::of(ContactGeometry<Real>{true, normal, depth, point, bound, ContactKind::edge_edge});
-      }
+    if (rim_depth > deepest) {
+      deepest = rim_depth;
+      g = Geometry::of(ContactGeometry<Real>{true, rim_normal, rim_depth, rim_point, bound, ContactKind::edge_edge});
     }
     return deepest > Real(0) ? g : Geometry::none();
+  }
+
+  // The ends inside the body of a wall's edge e0 -> e1 under the body's face whose outward normal
+  // is `normal` (world axes), with their depths below that face: points of a flush contact's patch,
+  // appended to point[] and depth[] while count < kFlushPoints.
+  BLAZE_HD static void flush_ends(const Body& a, const PolyhedronData<Real>& A, const Mat3<Real>& ra, const Vec3<Real>& e0,
+                                  const Vec3<Real>& e1, const Vec3<Real>& normal, Vec3<Real>* point, Real* depth, int& count) {
+    const Vec3<Real> p0 = ra.transpose_times(e0 - a.x), dl = ra.transpose_times(e1 - e0), nb = ra.transpose_times(normal);
+    Real t0 = 0, t1 = 1;
+    clip_to_body(a, A, p0, dl, t0, t1);
+    int face = 0;  // the flush face: the one whose normal the contact took
+    for (int f = 1; f < A.face_count; ++f)
+      if (dot(A.normal[f], nb) > dot(A.normal[face], nb)) face = f;
+    for (int j = 0; j < 2 && count < kFlushPoints; ++j) {
+      const Real t = j == 0 ? t0 : t1;
+      point[count] = e0 + (e1 - e0) * t;
+      depth[count++] = A.offset[face] * a.scale - dot(A.normal[face], p0 + dl * t);
+    }
   }
 
   // Is q (a point of w's plane) outside w past one of its active rim edges?
@@ -712,17 +743,8 @@ struct PolyhedronShape {
         ed_k.flush = true;
         ed_k.n = on_t ? n : s.normal[o];
         ed_k.offset = on_t ? offset : dot(s.normal[o], s.vertex[s.triangle[3 * o]]);
-        const Vec3<Real> p0 = ra.transpose_times(e0 - xr), dl = ra.transpose_times(ed);
-        Real t0 = 0, t1 = 1;
-        clip_to_body(in_frame, A, p0, dl, t0, t1);
-        int face = 0;  // the flush face: the one whose normal the contact took
-        for (int f = 1; f < A.face_count; ++f)
-          if (dot(ra * A.normal[f], normal) > dot(ra * A.normal[face], normal)) face = f;
-        for (int j = 0; j < 2; ++j) {
-          const Real tj = j == 0 ? t0 : t1;
-          ed_k.end[j] = e0 + ed * tj;
-          ed_k.end_depth[j] = A.offset[face] * a.scale - dot(A.normal[face], p0 + dl * tj);
-        }
+        int ends = 0;
+        flush_ends(in_frame, A, ra, e0, e1, normal, ed_k.end, ed_k.end_depth, ends);
       }
       if (!below && !through && !rounded) continue;
       const int q = group(n, offset, reach, t);
