@@ -566,6 +566,11 @@ constexpr double mesh_rim_ridge_depth = 5;
 // overlaps differ across the face: ~1e-4 degrees); supported by the vertices on the table alone it
 // would tip until the edge caught it. Measured 1.25e-4 on both (2026-12); 0.05.
 constexpr double mesh_rim_flat_tilt = 0.05;
+// The same cube's rest on the mesh table against the planar one: the same contacts (the mesh's
+// normals and plane offsets are formed in double from the same corners): measured 0 (2026-12);
+// 1e-9 of the half edge. (With the planar wall keeping the deeper of its vertex and rim
+// contacts: 5e-5.)
+constexpr double mesh_rim_same_rest = 1e-9;
 
 // Feeding (test_feeding.cpp). The 99% quantile of the Kolmogorov distribution: the KS distance
 // of n draws from their own CDF exceeds 1.63 / sqrt(n) with probability 1% (Kolmogorov 1933;
