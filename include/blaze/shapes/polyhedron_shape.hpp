@@ -59,7 +59,8 @@
 // Polyhedron-world (Algorithm 2): the centre must be on the wall's side and within bound_R of
 // the plane (lines 1-2); penetrating vertices whose foot lies inside the polygon are the contact
 // (unless they came round an active rim edge: then that edge inside the body is, as the
-// thesis's spheres have no rim contact and its polyhedra none either; collide_world);
+// thesis's spheres have no rim contact and its polyhedra none either; collide_world; an edge
+// under a face lying flat on the wall is part of the wall's patch instead: kFlushFace);
 // overlap = the deepest; point = the deepest vertex, spread over those within 1% of its depth
 // (the thesis's mean of the penetrating vertices gains energy with the deepest overlap; see
 // penetrating_vertices), and those vertices are the patch as above. Cylinder (drum): vertices
@@ -165,8 +166,9 @@ struct PolyhedronShape {
   // An edge-pair axis that separates by at most this share of the best face axis's penetration
   // more than that face keeps the face's contact point and patch (header comment).
   static constexpr double kFacePreference = 1e-3;
-  // A mesh's rim edge under a face of the body that lies within 1 degree of flat on one of the
-  // edge's planes is no contact of its own (collide_mesh): cos(1 degree).
+  // A wall's rim edge under a face of the body that lies within 1 degree of flat on one of the
+  // edge's planes is no contact of its own: its ends join that plane's patch (collide_world for a
+  // planar wall, collide_mesh): cos(1 degree).
   static constexpr double kFlushFace = 0.99984769515639127;
   static constexpr int kFlushPoints = 4;  // such edges' ends one plane's patch takes (two edges)
   // Contact kernels: at least this many blocks of 256 per SM (launch.hpp): 4 caps them at 64
