@@ -23,6 +23,7 @@
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"
 #include "verification/tolerances.hpp"
+#include "verification/wall_scenes.hpp"
 
 using namespace blaze;
 using namespace blaze::test;
@@ -191,12 +192,6 @@ void moving_plate_as_polygon(const Law& law, const Motion& motion, const std::st
 }
 
 // A mesh of the given triangles over the vertices.
-TriangleMesh mesh_of(std::vector<Vec3<double>> v, std::vector<std::array<int, 3>> t) {
-  TriangleMesh m;
-  m.vertices = std::move(v), m.triangles = std::move(t);
-  return m;
-}
-
 // A sphere dropped straight down on a vertex or an edge of a convex mesh rebounds straight up.
 void drop_on(const TriangleMesh& mesh, const Vec3<double>& above, const std::string& feature) {
   using Law = HertzLaw<double>;
@@ -369,23 +364,8 @@ BOOST_AUTO_TEST_CASE(cube_in_a_valley_rests_on_both_faces) {
   w.meshes.push_back({"valley", mesh_of({{0, -s, 0}, {0, s, 0}, {s, -s, rise}, {s, s, rise}, {-s, -s, rise}, {-s, s, rise}},
                                         {{0, 2, 3}, {0, 3, 1}, {0, 1, 5}, {0, 5, 4}}), 1});
   // turned so that two face normals a, b of its (principal) body frame become the valley's
-  // u1 = (1, 0, 1) / sqrt 2 and y (then a x b becomes u1 x y = u2, the other face's): Q = u1 a^T +
-  // y b^T + u2 (a x b)^T, as a quaternion
-  const auto& d = shape.table.type[0];
-  const Vec3<double> a = d.normal[0];
-  Vec3<double> b = d.normal[1];
-  for (int f = 1; f < d.face_count; ++f)
-    if (std::fabs(dot(a, d.normal[f])) < 0.5) b = d.normal[f];
-  const Vec3<double> c3 = cross(a, b), u1{std::sqrt(0.5), 0, std::sqrt(0.5)}, y{0, 1, 0}, u2 = cross(u1, y);
-  double q[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z}, cv[3] = {c3.x, c3.y, c3.z};
-      const double t1[3] = {u1.x, u1.y, u1.z}, t2[3] = {y.x, y.y, y.z}, t3[3] = {u2.x, u2.y, u2.z};
-      q[i][j] = t1[i] * av[j] + t2[i] * bv[j] + t3[i] * cv[j];
-    }
-  const double qw = 0.5 * std::sqrt(std::fmax(0.0, 1 + q[0][0] + q[1][1] + q[2][2]));
-  const Quat<double> turn{qw, (q[2][1] - q[1][2]) / (4 * qw), (q[0][2] - q[2][0]) / (4 * qw), (q[1][0] - q[0][1]) / (4 * qw)};
+  // u1 = (1, 0, 1) / sqrt 2 and y (then a x b becomes u1 x y = u2, the other face's)
+  const Quat<double> turn = face_turn(shape.table.type[0], {std::sqrt(0.5), 0, std::sqrt(0.5)}, {0, 1, 0});
   ParticleState<double> p;
   add_polyhedron(p, shape.table, 0, Vec3<double>{0.001, 0, 0.01 * std::sqrt(2.0) + 0.002}, turn, 0, Vec3<double>{0, 0, 0});
   using Law = LinearLaw<double>;
