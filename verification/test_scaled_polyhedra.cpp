@@ -73,16 +73,17 @@ BOOST_AUTO_TEST_CASE(a_scaled_body_collides_as_its_scaled_shape) {
   std::uniform_real_distribution<double> u(0, 1);
   double worst_pair = 0, worst_wall = 0;
   long touching = 0, pairs = 0;
+  // shape c (no vertices: a sphere type of radius 0.01) scaled by k, a table type of `shape`
+  const auto add = [](PolyhedronShape<double>& shape, const ConvexShape& c, double k) {
+    if (c.vertices.empty()) shape.table.add_sphere(0.01 * k, 2500);
+    else shape.table.add(scaled(c, k), 2500);
+  };
   for (int ta = 0; ta < n; ++ta)
     for (int tb = ta; tb < n; ++tb)
       for (const double sa : scales)
         for (const double sb : scales) {
           // the types at 1 cm, scaled per body; against the table of the scaled shapes
           PolyhedronShape<double> unit, pre;
-          const auto add = [](PolyhedronShape<double>& shape, const ConvexShape& c, double k) {
-            if (c.vertices.empty()) shape.table.add_sphere(0.01 * k, 2500);
-            else shape.table.add(scaled(c, k), 2500);
-          };
           add(unit, shapes[ta], 1), add(unit, shapes[tb], 1);
           add(pre, shapes[ta], sa), add(pre, shapes[tb], sb);
           const double size = 0.01 * (sa + sb);
@@ -104,8 +105,7 @@ BOOST_AUTO_TEST_CASE(a_scaled_body_collides_as_its_scaled_shape) {
   for (int t = 0; t < n; ++t)
     for (const double s : scales) {
       PolyhedronShape<double> unit, pre;
-      if (shapes[t].vertices.empty()) unit.table.add_sphere(0.01, 2500), pre.table.add_sphere(0.01 * s, 2500);
-      else unit.table.add(shapes[t], 2500), pre.table.add(scaled(shapes[t], s), 2500);
+      add(unit, shapes[t], 1), add(pre, shapes[t], s);
       const double size = 0.01 * s;
       for (int k = 0; k < 200; ++k) {
         const Quat<double> q = random_orientation(rng);
