@@ -13,7 +13,8 @@
 // Prints a table and writes bench/results/<device>-<date>[-TAG].csv (rows already in that file
 // are kept, this run's added after them). Options: --out DIR, --skin S
 // (skin in radii, default 0.2), --pairs auto|both_sides|once (SimulationParams::pairs; auto:
-// polyhedra once, spheres from both sides), --min-n N, --max-n N, --tag TAG, --cases
+// polyhedra once, spheres from both sides), --min-n N, --max-n N, --mesh-n N (the mesh cases'
+// particles: default 1e6 on the GPU, 2e4 on the CPU), --tag TAG, --cases
 // spheres,polyhedra,packed,surfaces,skip,mill,lifters,mesh,largest (default all but largest, lifters and mesh).
 #include <algorithm>
 #include <cctype>
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
   // polydisperse: by default on the GPU only (settling its bed takes minutes on 2 CPU cores)
   std::string cases = "spheres,history,polyhedra,packed,surfaces,skip,mill", tag_suffix;
   bool cases_given = false;
-  long largest_spheres = 500000000, largest_cubes = 100000000;
+  long largest_spheres = 500000000, largest_cubes = 100000000, mesh_n = 0;
   for (int a = 1; a + 1 < argc; ++a) {
     const std::string opt = argv[a];
     if (opt == "--out") out_dir = argv[a + 1];
@@ -121,6 +122,7 @@ int main(int argc, char** argv) {
     if (opt == "--skin") g_skin_fraction = std::stod(argv[a + 1]);
     if (opt == "--max-n") max_n = std::stol(argv[a + 1]);
     if (opt == "--min-n") min_n = std::stol(argv[a + 1]);
+    if (opt == "--mesh-n") mesh_n = std::stol(argv[a + 1]);
     if (opt == "--cases") cases = argv[a + 1], cases_given = true;
   }
   const auto wanted = [&](const char* name) { return ("," + cases + ",").find("," + std::string(name) + ",") != std::string::npos; };
@@ -221,7 +223,7 @@ int main(int argc, char** argv) {
   }
   if (wanted("mesh")) {  // the world phase against the size of a mesh (issue 20)
     const std::size_t first = rows.size();
-    const long n = gpu ? 1000000L : 20000L;
+    const long n = mesh_n > 0 ? mesh_n : gpu ? 1000000L : 20000L;
     std::vector<long> sizes_t = {0L, 1000L, 10000L, 100000L};
     if (gpu) sizes_t.push_back(1000000L);
     for (long triangles : sizes_t) rows.push_back(mesh_box_case(n, triangles, 20, gpu ? 200 : 40));

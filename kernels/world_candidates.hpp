@@ -12,6 +12,15 @@
 // (pipeline/world_candidates.hpp). Objects are listed in index order, so the world kernel sums
 // its contacts in the same order as a full pass: the forces are bitwise those of the full pass.
 // A particle with more than kWorldCandidates objects in reach is marked and tests every object.
+// Triangle lists (issue 20): with `triangle` given, the same build lists the mesh triangles within
+// the same reach of x_i (triangle_near: its nearest point, in the mesh's frame as placed then;
+// in ascending index, as its bins' cell lists them), and a mesh is listed only when some of its
+// triangles are. The mesh contact then tests those few instead of its cell's (at 1e5 triangles
+// ~40 for a ball near the dense bed's wall): a triangle it can touch before the next rebuild
+// lies within r_i + skin now, by the argument above, and one farther than the particle's
+// bounding radius offers no contact (mesh_wall.hpp, polyhedron_shape.hpp), so the contacts are
+// bitwise those of the cell's triangles. The count is kept even past the room (up to 65535), so
+// the pipeline grows the room to fit; a particle past it tests its cell.
 #pragma once
 #include <cstdint>
 #include "blaze/exec/launch.hpp"
@@ -28,6 +37,9 @@ struct BuildWorldCandidates {
   std::uint16_t* object;
   std::uint8_t* count;
   Index stride;
+  int* triangle = nullptr;  // triangle lists (null: none)
+  std::uint16_t* triangle_count = nullptr;
+  int triangle_capacity = 0;
 
   BLAZE_HD void operator()(Index i) const {
     const Vec3<Real> x = position.get(i);
@@ -45,8 +57,25 @@ struct BuildWorldCandidates {
       if (!world.pose || world.pose[w].active) take(within_reach(x, reach, world.polygons[k]), w);
     for (int k = 0; k < world.cylinder_count; ++k, ++w)
       if (!world.pose || world.pose[w].active) take(within_reach(x, reach, world.cylinders[k]), w);
-    for (int k = 0; k < world.mesh_count; ++k, ++w)  // its bins' reach covers reach (mesh_wall.hpp)
-      if (!world.pose || world.pose[w].active) take(mesh_near(x, world.meshes[k], world.pose_of(w)), w);
+    int tc = 0;
+    for (int k = 0; k < world.mesh_count; ++k, ++w) {
+      if (world.pose && !world.pose[w].active) continue;
+      if (!triangle) {  // its bins' reach covers reach (mesh_wall.hpp)
+        take(mesh_near(x, world.meshes[k], world.pose_of(w)), w);
+        continue;
+      }
+      const Pose<Real>* pose = world.pose_of(w);
+      const Vec3<Real> xr = pose ? pose->to_reference(x) : x;
+      int found = 0;
+      for_each_near_triangle(world.meshes[k], xr, TriangleList{}, [&](int t) {
+        if (!triangle_near(world.surface, t, xr, reach)) return;
+        if (tc < triangle_capacity) triangle[static_cast<std::size_t>(tc) * stride + i] = t;
+        if (tc < 65535) ++tc;
+        ++found;
+      });
+      take(found > 0, w);
+    }
+    if (triangle) triangle_count[i] = static_cast<std::uint16_t>(tc);
     count[i] = c > kWorldCandidates ? kWorldCandidatesOverflow : static_cast<std::uint8_t>(c);
   }
 };

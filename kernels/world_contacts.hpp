@@ -3,7 +3,8 @@
 //   f(geometry, material, w, key, group)
 // for every object w present that the particle may touch (WorldView::visit): a polygon or a
 // cylinder gives the shape's collide_world() (touching or not), key w and a null group; a triangle
-// mesh gives each of its merged contacts (blaze/world/mesh_wall.hpp, at most kMeshContacts),
+// mesh gives each of its merged contacts (blaze/world/mesh_wall.hpp, at most kMeshContacts; from
+// the particle's triangle list when it has one, kernels/world_candidates.hpp),
 // key mesh_key_base + the triangle that offered it, and the group of them all (for the history's
 // hand-over between triangles, kernels/contact_history.hpp).
 #pragma once
@@ -31,7 +32,7 @@ BLAZE_HD void for_each_world_contact(const Shape& shape, const Body& body, const
   world.visit(i, [&](const auto& object, int w) {
     if constexpr (std::is_same_v<std::decay_t<decltype(object)>, MeshObject<Real>>) {
       Group group;
-      shape.collide_mesh(body, world.surface, object, world.pose_of(w), group);
+      shape.collide_mesh(body, world.surface, object, world.pose_of(w), group, world.near_triangles(i));
       for (int k = 0; k < group.count; ++k)
         f(group.contact[k], static_cast<int>(object.material), w, static_cast<WallKey>(world.mesh_key_base + group.owner[k]), &group);
     } else {

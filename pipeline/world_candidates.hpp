@@ -4,6 +4,10 @@
 // skin / 2 since its build: at most floor(skin / (2 v dt)) steps for the fastest surface speed v
 // (World::surface_speed: a drum turning about its own axis does not count; its lifters do). With
 // skin 0 every step rebuilds once anything moves, as the neighbour list does.
+// With meshes the same build keeps each particle's triangle list (kernels/world_candidates.hpp),
+// in room for `triangle_capacity` triangles a particle: when a particle reaches more, the room
+// grows (to 1.25x the most, up to kTriangleCandidatesLargest) and the build runs again, as the
+// neighbour list grows; never during the steps between rebuilds.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -14,6 +18,7 @@
 #include "blaze/exec/primitives.hpp"
 #include "blaze/particles/particle_store.hpp"
 #include "blaze/world/world.hpp"
+#include "kernels/broad_phase_kernels.hpp"  // ValueOf
 #include "kernels/world_candidates.hpp"
 
 namespace blaze {
@@ -36,6 +41,7 @@ class WorldCandidates {
     on_ = objects > 0 && objects <= 65535 &&
           (mode == WorldLists::on || (mode == WorldLists::automatic && (objects >= kWorldListsMinObjects || !world.meshes.empty())));
     skin_ = skin;
+    triangles_ = on_ && !world.meshes.empty();
     double v = 0;
     for (int k = 0; k < objects; ++k) v = std::fmax(v, world.surface_speed(k));
     const double steps = v > 0 ? std::floor(0.5 * static_cast<double>(skin) / (v * dt)) : HUGE_VAL;
@@ -49,7 +55,20 @@ class WorldCandidates {
     stride_ = p.n;
     object_.resize(std::max<std::size_t>(object_.size(), static_cast<std::size_t>(kWorldCandidates) * p.n));
     count_.resize(std::max<std::size_t>(count_.size(), p.n));
-    for_each(Space{}, p.n, BuildWorldCandidates<Real>{p.position, p.radius, world, skin_, object_.data(), count_.data(), stride_});
+    for (;;) {
+      if (triangles_) {
+        triangle_.resize(std::max<std::size_t>(triangle_.size(), static_cast<std::size_t>(triangle_capacity_) * p.n));
+        triangle_count_.resize(std::max<std::size_t>(triangle_count_.size(), p.n));
+      }
+      for_each(Space{}, p.n,
+               BuildWorldCandidates<Real>{p.position, p.radius, world, skin_, object_.data(), count_.data(), stride_,
+                                          triangles_ ? triangle_.data() : nullptr, triangles_ ? triangle_count_.data() : nullptr,
+                                          triangle_capacity_});
+      if (!triangles_ || triangle_capacity_ >= kTriangleCandidatesLargest) break;
+      const int most = reduce_max(Space{}, p.n, ValueOf<std::uint16_t>{triangle_count_.data()}, 0);
+      if (most <= triangle_capacity_) break;
+      triangle_capacity_ = std::min(kTriangleCandidatesLargest, most + most / 4);
+    }
     valid_until_ = valid_steps_ == kForever || step > kForever - valid_steps_ ? kForever : step + valid_steps_;
     ++builds_;
   }
@@ -57,6 +76,8 @@ class WorldCandidates {
   WorldView<Real> attach(WorldView<Real> w) const {
     if (!on_) return w;
     w.candidate = object_.data(), w.candidate_count = count_.data(), w.candidate_stride = stride_;
+    if (triangles_)
+      w.triangle_candidate = triangle_.data(), w.triangle_candidate_count = triangle_count_.data(), w.triangle_capacity = triangle_capacity_;
     return w;
   }
   // The last world step the lists hold for (kForever: a static world, or lists off).
@@ -76,6 +97,20 @@ class WorldCandidates {
     return total / static_cast<double>(c.size());
   }
   std::uint64_t builds() const { return builds_; }
+  // Triangle lists: kept (a world with meshes and lists on); the room per particle; at the last
+  // build, the particles past it (they test their bins' cells) and the mean triangles in reach.
+  bool triangle_lists_on() const { return triangles_; }
+  int triangle_capacity() const { return triangle_capacity_; }
+  Index triangle_overflowed() const {
+    const std::vector<std::uint16_t> c = triangle_counts();
+    return static_cast<Index>(std::count_if(c.begin(), c.end(), [&](int k) { return k > triangle_capacity_; }));
+  }
+  double mean_triangles_listed() const {
+    const std::vector<std::uint16_t> c = triangle_counts();
+    double total = 0;
+    for (auto k : c) total += k;
+    return c.empty() ? 0 : total / static_cast<double>(c.size());
+  }
   // Particle i's list as the last build left it (tests); empty when off, every object on overflow.
   std::vector<std::vector<int>> lists(int objects) const {
     const std::vector<std::uint8_t> c = counts();
@@ -90,7 +125,24 @@ class WorldCandidates {
     }
     return out;
   }
-  std::size_t bytes() const { return object_.size() * sizeof(std::uint16_t) + count_.size(); }
+  // Particle i's triangle list as the last build left it (tests): global triangle indices, or
+  // {-1} when it overflowed; empty without triangle lists.
+  std::vector<std::vector<int>> triangle_lists() const {
+    const std::vector<std::uint16_t> c = triangle_counts();
+    std::vector<int> t(c.empty() ? 0 : static_cast<std::size_t>(triangle_capacity_) * stride_);
+    copy_n(triangle_.data(), t.size(), t.data(), Space{}, Host{});
+    std::vector<std::vector<int>> out(c.size());
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (c[i] > triangle_capacity_) out[i] = {-1};
+      else
+        for (int k = 0; k < c[i]; ++k) out[i].push_back(t[static_cast<std::size_t>(k) * stride_ + i]);
+    }
+    return out;
+  }
+  std::size_t bytes() const {
+    return object_.size() * sizeof(std::uint16_t) + count_.size() + triangle_.size() * sizeof(int) +
+           triangle_count_.size() * sizeof(std::uint16_t);
+  }
 
  private:
   std::vector<std::uint8_t> counts() const {
@@ -98,12 +150,20 @@ class WorldCandidates {
     copy_n(count_.data(), c.size(), c.data(), Space{}, Host{});
     return c;
   }
-  bool on_ = false;
+  std::vector<std::uint16_t> triangle_counts() const {
+    std::vector<std::uint16_t> c(triangles_ && builds_ ? static_cast<std::size_t>(stride_) : 0);
+    copy_n(triangle_count_.data(), c.size(), c.data(), Space{}, Host{});
+    return c;
+  }
+  bool on_ = false, triangles_ = false;
+  int triangle_capacity_ = kTriangleCandidatesFirst;
   Real skin_ = 0;
   std::uint64_t valid_steps_ = kForever, valid_until_ = kForever, builds_ = 0;
   Index stride_ = 0;
   Buffer<std::uint16_t, Space> object_;
   Buffer<std::uint8_t, Space> count_;
+  Buffer<int, Space> triangle_;
+  Buffer<std::uint16_t, Space> triangle_count_;
 };
 
 }  // namespace blaze

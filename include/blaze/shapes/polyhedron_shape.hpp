@@ -620,13 +620,13 @@ struct PolyhedronShape {
   // deeper of its vertex and rim contacts instead: one contact per polygon.)
   template <int K>
   BLAZE_HD void collide_mesh(const Body& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,
-                             MeshContacts<Real, K, Geometry>& out) const {
+                             MeshContacts<Real, K, Geometry>& out, const TriangleList& near = {}) const {
     using mesh_detail::edge_side;
     const PolyhedronData<Real>& A = data(a.type);
     const Real bound = radius_of(a);
     if (A.vertex_count == 0) {
       MeshContacts<Real, K> points;
-      collide_sphere_mesh(a.x, bound, s, m, pose, points);
+      collide_sphere_mesh(a.x, bound, s, m, pose, points, near);
       for (int k = 0; k < points.count; ++k) out.add(Geometry::of(points.contact[k]), points.owner[k], bound);
       return;
     }
@@ -637,8 +637,7 @@ struct PolyhedronShape {
     Vec3<Real> placed[kMaxVertices];  // the vertices in the mesh's frame, once (not per triangle)
     for (int k = 0; k < A.vertex_count; ++k) placed[k] = xr + ra * (A.vertex[k] * a.scale);
     const auto vertex = [&](int k) { return placed[k]; };
-    int first = 0, last = 0;
-    m.bins.cell_of(xr, first, last);
+    const TriangleRange tested = near_triangles(m, xr, near);
     struct Plane {
       Vec3<Real> n;
       Real offset;
@@ -670,14 +669,20 @@ struct PolyhedronShape {
       groups[planes] = {n, offset, 0u, 0u, 0u, t, 0, {}, {}};
       return planes++;
     };
-    for (int e = first; e < last; ++e) {
-      const int t = m.bins.entry[e];
+    for (int e = 0; e < tested.count; ++e) {
+      const int t = tested[e];
+      if (!m.owns(t)) continue;
       const int* tri = s.triangle + 3 * t;
       const Vec3<Real> v[3] = {s.vertex[tri[0]], s.vertex[tri[1]], s.vertex[tri[2]]};
       const Vec3<Real> n = s.normal[t];
       const Real offset = dot(n, v[0]);
       const Real d_com = dot(xr, n) - offset;
       if (!(d_com > -bound && d_com < bound)) continue;
+      // Beyond the bounding sphere no point of the body lies in it or over it: what a triangle
+      // farther off would add is nothing, or the `rounded` mark of a vertex that came round one
+      // of its rim edges far away (which made the result depend on the bins' cells); so the
+      // triangle list's extra triangles and the cell's give the same contacts.
+      if (!triangle_within(xr, v[0], v[1], v[2], bound)) continue;
       const bool in_front = d_com > Real(0);  // behind the plane: only its open edges (a lip met from below)
       const Real reach = sqrt_r(max_r(norm2(v[1] - v[0]), norm2(v[2] - v[0]))) + bound + sqrt_r(norm2(xr - v[0]));
       const Real margin = Real(64) * epsilon_r<Real>() * reach * reach;
@@ -790,7 +795,8 @@ struct PolyhedronShape {
       out.add(g, pl.owner, bound);
     }
     // The edges' contacts, keyed (the history's key: the owner triangle) by a triangle no contact
-    // of the group holds: the one that took the edge, its neighbour, or another listed near.
+    // of the group holds: the one that took the edge, its neighbour across it, or one across
+    // another edge of either (by the mesh alone: the same whichever triangles were tested).
     for (int k = 0; k < edges; ++k) {
       if (edge[k].flush) continue;
       const auto taken = [&](int u) {
@@ -798,9 +804,13 @@ struct PolyhedronShape {
           if (out.owner[j] == u) return true;
         return false;
       };
-      int owner = edge[k].t;
-      if (taken(owner) && edge[k].o >= 0) owner = edge[k].o;
-      for (int e = first; e < last && taken(owner); ++e) owner = m.bins.entry[e];
+      const int t = edge[k].t, o = edge[k].o;
+      int owner = t;
+      if (taken(owner) && o >= 0) owner = o;
+      for (int j = 0; j < 6 && taken(owner); ++j) {
+        const int u = j < 3 ? s.neighbour[3 * t + j] : o >= 0 ? s.neighbour[3 * o + j - 3] : -1;
+        if (u >= 0) owner = u;
+      }
       ContactGeometry<Real> c = edge[k].g;
       if (pose) c.normal = pose->turn(c.normal), c.point = pose->place(c.point);
       out.add(Geometry::of(c), owner, bound);

@@ -45,11 +45,12 @@ struct SphereShape {
   BLAZE_HD ContactGeometry<Real> collide_world(const Body<Real>& a, const Object& w) const {
     return collide_sphere(a.x, a.r, w);
   }
-  // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp), merged per surface point.
+  // Contacts with a triangle mesh (blaze/world/mesh_wall.hpp), merged per surface point; the
+  // triangles of `near` (the particle's triangle list) or of its bins' cell.
   template <class Real, int K>
   BLAZE_HD void collide_mesh(const Body<Real>& a, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m, const Pose<Real>* pose,
-                             MeshContacts<Real, K>& out) const {
-    collide_sphere_mesh(a.x, a.r, s, m, pose, out);
+                             MeshContacts<Real, K>& out, const TriangleList& near = {}) const {
+    collide_sphere_mesh(a.x, a.r, s, m, pose, out, near);
   }
 
   // Rotation steps the integrators call. kick: w += I^-1 T h. drift: turn q by w dt (w is constant

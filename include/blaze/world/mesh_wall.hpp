@@ -21,6 +21,7 @@
 #include "blaze/world/mesh_bins.hpp"
 #include "blaze/world/mesh_surface.hpp"
 #include "blaze/world/motion.hpp"
+#include "blaze/world/triangle_distance.hpp"
 
 namespace blaze {
 
@@ -105,18 +106,55 @@ MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) 
   return a;
 }
 
+// A particle's triangle list (kernels/world_candidates.hpp): the triangles of every mesh that lay
+// within its reach at the last rebuild, in ascending index (global over the meshes), or none
+// (count < 0: the list overflowed or there is none), when the triangles of its bins' cell are
+// tested instead. Either holds every triangle the particle can touch until the next rebuild.
+struct TriangleList {
+  const int* triangle = nullptr;  // triangle[k * stride], k < count
+  Index stride = 0;
+  int count = -1;
+};
+
+// Some point of triangle t of surface s lies within `reach` of x (up to rounding, triangle_distance.hpp).
+template <class Real>
+BLAZE_HD bool triangle_near(const MeshSurfaceView<Real>& s, int t, const Vec3<Real>& x, Real reach) {
+  const int* tri = s.triangle + 3 * t;
+  return triangle_within(x, s.vertex[tri[0]], s.vertex[tri[1]], s.vertex[tri[2]], reach);
+}
+
+// The triangles to test for a particle at x_ref (its mesh's reference frame): its list's
+// (of every mesh: a user keeps those m owns) or its cell's in mesh m's bins; ascending either way.
+struct TriangleRange {
+  const int* first;
+  std::size_t step;
+  int count;
+  BLAZE_HD int operator[](int k) const { return first[static_cast<std::size_t>(k) * step]; }
+};
+template <class Real>
+BLAZE_HD TriangleRange near_triangles(const MeshObject<Real>& m, const Vec3<Real>& x_ref, const TriangleList& list) {
+  if (list.count >= 0) return {list.triangle, static_cast<std::size_t>(list.stride), list.count};
+  int first = 0, last = 0;
+  m.bins.cell_of(x_ref, first, last);
+  return {m.bins.entry + first, 1, last - first};
+}
+
+// f(t) for each triangle t of mesh m in near_triangles.
+template <class Real, class F>
+BLAZE_HD void for_each_near_triangle(const MeshObject<Real>& m, const Vec3<Real>& x_ref, const TriangleList& list, F&& f) {
+  const TriangleRange r = near_triangles(m, x_ref, list);
+  for (int k = 0; k < r.count; ++k)
+    if (m.owns(r[k])) f(r[k]);
+}
+
 // The contacts sphere (x, r) has with mesh m (pose: where it stands; null: as built), merged per
-// point of the surface (mesh_surface.hpp), in the world frame; added to `out`.
+// point of the surface (mesh_surface.hpp), in the world frame; added to `out`. A triangle farther
+// than r offers nothing, so the list's extra triangles change nothing.
 template <class Real, int K>
 BLAZE_HD void collide_sphere_mesh(const Vec3<Real>& x, Real r, const MeshSurfaceView<Real>& s, const MeshObject<Real>& m,
-                                  const Pose<Real>* pose, MeshContacts<Real, K>& out) {
+                                  const Pose<Real>* pose, MeshContacts<Real, K>& out, const TriangleList& list = {}) {
   const Vec3<Real> xr = pose ? pose->to_reference(x) : x;
-  int first = 0, last = 0;
-  m.bins.cell_of(xr, first, last);
-  for (int e = first; e < last; ++e) {
-    const int t = m.bins.entry[e];
-    out.add(collide_sphere_mesh_triangle(xr, r, s, t), t, r);
-  }
+  for_each_near_triangle(m, xr, list, [&](int t) { out.add(collide_sphere_mesh_triangle(xr, r, s, t), t, r); });
   if (pose)
     for (int k = 0; k < out.count; ++k) {
       out.contact[k].normal = pose->turn(out.contact[k].normal);

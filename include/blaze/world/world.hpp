@@ -138,6 +138,11 @@ World<Real> placed(const World<Real>& ref, const std::vector<Pose<Real>>& poses)
 // that reaches more is marked with the overflow count and tests every object.
 constexpr int kWorldCandidates = 8;
 constexpr std::uint8_t kWorldCandidatesOverflow = 255;
+// Triangle lists (the same kernel): room for this many mesh triangles per particle at first; the
+// room grows to the most a particle reaches, up to the largest; a particle beyond it tests its
+// bins' cell.
+constexpr int kTriangleCandidatesFirst = 8;
+constexpr int kTriangleCandidatesLargest = 256;
 
 template <class Real>
 struct WorldView {
@@ -156,7 +161,18 @@ struct WorldView {
   const std::uint16_t* candidate = nullptr;
   const std::uint8_t* candidate_count = nullptr;
   Index candidate_stride = 0;
+  // Per particle i, its triangle list: triangles triangle_candidate[k * candidate_stride + i],
+  // k < triangle_candidate_count[i] (more than triangle_capacity: its cells'); null: cells for all.
+  const int* triangle_candidate = nullptr;
+  const std::uint16_t* triangle_candidate_count = nullptr;
+  int triangle_capacity = 0;
 
+  BLAZE_HD TriangleList near_triangles(Index i) const {
+    if (!triangle_candidate) return {};
+    const int c = triangle_candidate_count[i];
+    if (c > triangle_capacity) return {};
+    return {triangle_candidate + i, candidate_stride, c};
+  }
   BLAZE_HD ContactClass class_of(int w) const { return object_class ? object_class[w] : ContactClass::wall; }
   BLAZE_HD bool active(int w) const { return pose[w].active; }
   BLAZE_HD const Pose<Real>* pose_of(int w) const { return pose + w; }
