@@ -516,6 +516,14 @@ constexpr double triangle_distance_float = 5e-5;
 // Triangles listed per ball over those in its bins' cell, in the turning mesh drum: measured 0.081
 // (skin 0.05 r), 0.19 (0.3 r), 0.25 (r) (2026-12); half the cell's would hardly prune.
 constexpr double triangle_lists_listed_fraction = 0.5;
+// --- domain decomposition (issue 21; verification/test_decomposition.cpp) ---
+// The boxes' volumes add up to the domain's: products of differences of the same cut values,
+// rounding only (~1e-16).
+constexpr double decomposition_volume = 1e-12;
+// Imbalance - 1 of 64 000 clustered particles when the cuts come from a 1-in-16 sample: a
+// quantile from 4 000 points is off by ~1/sqrt(4000 / ranks) of a rank's share (8 ranks: ~4%, and
+// the errors of nested cuts add). Measured 0.074 (2-8 ranks, 2026-12); 2x.
+constexpr double decomposition_sampled_imbalance = 0.15;
 // A surface speed bound against its closed form (omega times a distance, a few operations in
 // double): rounding only, ~1e-16 relative.
 constexpr double surface_speed_closed_form = 1e-12;
