@@ -28,6 +28,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include "blaze/io/bytes.hpp"
 #include "blaze/sim/snapshot.hpp"
 
 namespace blaze {
@@ -47,48 +48,10 @@ inline std::uint64_t fnv1a(const std::string& bytes) {
   return h;
 }
 
-template <class T>
-void put(std::string& out, const T& v) {
-  out.append(reinterpret_cast<const char*>(&v), sizeof v);
-}
-template <class T>
-void put_array(std::string& out, const std::vector<T>& v) {
-  put(out, static_cast<std::uint64_t>(v.size()));
-  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-}
-
-// Reads values from a byte string, failing (not overrunning) at its end.
-class Reader {
+// Reads the payload; fails naming the file.
+class Reader : public ByteReader<CheckpointError> {
  public:
-  Reader(const std::string& bytes, std::string path) : b_(bytes), path_(std::move(path)) {}
-  template <class T>
-  T get() {
-    T v;
-    need(sizeof v);
-    std::memcpy(&v, b_.data() + at_, sizeof v);
-    at_ += sizeof v;
-    return v;
-  }
-  template <class T>
-  std::vector<T> array(std::uint64_t n) {
-    if (n > (b_.size() - at_) / sizeof(T)) fail("an array runs past the end of the payload");
-    std::vector<T> v(n);
-    if (n) std::memcpy(v.data(), b_.data() + at_, n * sizeof(T));
-    at_ += n * sizeof(T);
-    return v;
-  }
-  template <class T>
-  std::vector<T> array() { return array<T>(get<std::uint64_t>()); }
-  bool done() const { return at_ == b_.size(); }
-  [[noreturn]] void fail(const std::string& what) const { throw CheckpointError(path_ + ": corrupt checkpoint: " + what); }
-
- private:
-  void need(std::size_t n) const {
-    if (b_.size() - at_ < n) fail("the payload ends early");
-  }
-  const std::string& b_;
-  std::string path_;
-  std::size_t at_ = 0;
+  Reader(const std::string& bytes, const std::string& path) : ByteReader<CheckpointError>(bytes, path + ": corrupt checkpoint: ") {}
 };
 
 }  // namespace checkpoint_detail
