@@ -8,7 +8,7 @@ if [ -n "${BLAZE_SKIP_DEPS:-}" ]; then
 fi
 pkgs=(g++ make libeigen3-dev libboost-test-dev libgsl-dev gnuplot-nox libgnuplot-iostream-dev
       libboost-iostreams-dev libboost-filesystem-dev libboost-system-dev python3 python3-meshio libgomp1
-      libtomlplusplus-dev python3-vtk9)
+      libtomlplusplus-dev python3-vtk9 libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -45,6 +45,8 @@ struct Gather {
 template <class Real>
 struct StoreSnapshot {
   static constexpr std::size_t kRadiusField = 25;  // the radius array's place in `reals`
+  static constexpr std::size_t kPositionField = 0, kVelocityField = 3;  // x, y, z from there
+  static constexpr std::size_t kInverseMassField = 26;
   std::vector<std::vector<Real>> reals;  // ParticleStore::real_fields() order; empty where unused
   std::vector<std::uint8_t> material, type;
   std::vector<Index> id;
@@ -369,7 +371,9 @@ class ParticleStore {
     for (auto& c : orientation_) f.push_back(&c);
     for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_}) f.push_back(c);
     for (auto& c : ledger_) f.push_back(&c);  // last: older snapshots lack some (restore())
-    if (f[kRadiusField] != &radius_) throw std::logic_error("ParticleStore: kRadiusField is stale");
+    if (f[kRadiusField] != &radius_ || f[Snapshot::kPositionField] != &position_[0] || f[Snapshot::kVelocityField] != &velocity_[0] ||
+        f[Snapshot::kInverseMassField] != &inv_mass_)
+      throw std::logic_error("ParticleStore: the snapshot's field places are stale");
     return f;
   }
   // b[n, n + v.size()) = v, growing b (keeping [0, n)) when it is shorter than `total`.

@@ -1,0 +1,137 @@
+// The ranks of a run and what they say to each other (issue 21), over MPI (Debian's Open MPI; one
+// rank per GPU) when the build has it (BLAZE_MPI=1: the Makefile's mpi programs), else one rank
+// that talks to itself: the same code runs without MPI, at no cost.
+//   exchange(out)  out[r] to rank r, from every rank at once; returns what each rank sent here
+//                  (MPI_Alltoall of the sizes, MPI_Alltoallv of the bytes; messages over 2 GiB
+//                  are refused, as MPI's int counts cannot hold them);
+//   sum, max, all_gather, broadcast: collectives on plain values.
+// Every rank must make the same calls in the same order (they are collective).
+#pragma once
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#if BLAZE_MPI
+#include <mpi.h>
+#endif
+
+namespace blaze {
+
+struct CommunicatorError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Communicator {
+ public:
+  Communicator() {
+#if BLAZE_MPI
+    int on = 0;
+    MPI_Initialized(&on);
+    if (!on) throw CommunicatorError("communicator: MPI is not initialised (MpiSession in main)");
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#endif
+  }
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+  std::vector<std::string> exchange(const std::vector<std::string>& out) const {
+    if (out.size() != static_cast<std::size_t>(size_))
+      throw CommunicatorError("communicator: " + std::to_string(out.size()) + " messages for " + std::to_string(size_) + " ranks");
+#if BLAZE_MPI
+    std::vector<int> send_n(static_cast<std::size_t>(size_)), recv_n(static_cast<std::size_t>(size_));
+    std::vector<int> send_at(static_cast<std::size_t>(size_)), recv_at(static_cast<std::size_t>(size_));
+    std::string send;
+    for (int r = 0; r < size_; ++r) {
+      const std::string& m = out[static_cast<std::size_t>(r)];
+      if (m.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+          send.size() + m.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        throw CommunicatorError("communicator: rank " + std::to_string(rank_) + " would send more than 2 GiB at once");
+      send_at[static_cast<std::size_t>(r)] = static_cast<int>(send.size());
+      send_n[static_cast<std::size_t>(r)] = static_cast<int>(m.size());
+      send += m;
+    }
+    check(MPI_Alltoall(send_n.data(), 1, MPI_INT, recv_n.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Alltoall");
+    long total = 0;
+    for (int r = 0; r < size_; ++r) {
+      recv_at[static_cast<std::size_t>(r)] = static_cast<int>(total);
+      total += recv_n[static_cast<std::size_t>(r)];
+      if (total > std::numeric_limits<int>::max())
+        throw CommunicatorError("communicator: rank " + std::to_string(rank_) + " would receive more than 2 GiB at once");
+    }
+    std::string recv(static_cast<std::size_t>(total), '\0');
+    check(MPI_Alltoallv(send.data(), send_n.data(), send_at.data(), MPI_BYTE, recv.data(), recv_n.data(), recv_at.data(), MPI_BYTE,
+                        MPI_COMM_WORLD),
+          "MPI_Alltoallv");
+    std::vector<std::string> in(static_cast<std::size_t>(size_));
+    for (int r = 0; r < size_; ++r)
+      in[static_cast<std::size_t>(r)] = recv.substr(static_cast<std::size_t>(recv_at[static_cast<std::size_t>(r)]),
+                                                    static_cast<std::size_t>(recv_n[static_cast<std::size_t>(r)]));
+    return in;
+#else
+    return out;
+#endif
+  }
+
+  double sum(double v) const { return reduce(v, kSum); }
+  long sum(long v) const { return reduce(v, kSum); }
+  double max(double v) const { return reduce(v, kMax); }
+  long max(long v) const { return reduce(v, kMax); }
+  double min(double v) const { return reduce(v, kMin); }
+  // Every rank's v, in rank order (a plain value).
+  template <class T>
+  std::vector<T> all_gather(const T& v) const {
+    std::vector<T> all(static_cast<std::size_t>(size_));
+#if BLAZE_MPI
+    check(MPI_Allgather(&v, sizeof(T), MPI_BYTE, all.data(), sizeof(T), MPI_BYTE, MPI_COMM_WORLD), "MPI_Allgather");
+#else
+    all[0] = v;
+#endif
+    return all;
+  }
+  // Every rank's bytes, in rank order.
+  std::vector<std::string> all_gather_bytes(const std::string& mine) const {
+    std::vector<std::string> out(static_cast<std::size_t>(size_), mine);
+    return exchange(out);
+  }
+  void barrier() const {
+#if BLAZE_MPI
+    check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+#endif
+  }
+
+ private:
+  enum Op { kSum, kMax, kMin };
+  template <class T>
+  T reduce(T v, Op op) const {
+#if BLAZE_MPI
+    T out{};
+    const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : MPI_LONG;
+    check(MPI_Allreduce(&v, &out, 1, type, op == kSum ? MPI_SUM : op == kMax ? MPI_MAX : MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+    return out;
+#else
+    (void)op;
+    return v;
+#endif
+  }
+#if BLAZE_MPI
+  static void check(int code, const char* what) {
+    if (code != MPI_SUCCESS) throw CommunicatorError(std::string("communicator: ") + what + " failed (MPI error " + std::to_string(code) + ")");
+  }
+#endif
+  int rank_ = 0, size_ = 1;
+};
+
+#if BLAZE_MPI
+// MPI for the life of main(): initialised first, finalised last.
+class MpiSession {
+ public:
+  MpiSession(int* argc, char*** argv) { MPI_Init(argc, argv); }
+  ~MpiSession() { MPI_Finalize(); }
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+};
+#endif
+
+}  // namespace blaze
