@@ -216,6 +216,49 @@ class Simulation {
     if (fused()) return run_batched(steps);
     for (std::uint64_t s = 0; s < steps; ++s) step();
   }
+  // ---- A step in parts, for the distributed driver (pipeline/parallel/distributed_simulation.hpp,
+  // issue 21), which exchanges ghost particles between the parts: begin_step() moves the world and
+  // the particles (the pre-force integration) and stops before the rebuild check; needs_rebuild()
+  // is that check (0: the list holds; 1: rebuild; 2: a position is not finite), which the driver
+  // answers with reload() on every rank; end_step() evaluates the forces and ends the step.
+  // begin_step(), end_step() with the list holding is one step() of the per-phase path.
+  void begin_step() { run_phases(Space{}, store_.size(), step_phases(params_.dt), 0, kRebuildCheck, timer_); }
+  int needs_rebuild() {
+    const int code = broad_.rebuild_check(store_);
+    if (code == 0 && lists_.on()) {
+      const std::uint64_t* counter = world_.step_counter();
+      if (counter && read_one(counter, Space{}) > lists_.valid_until()) return 1;
+    }
+    return code;
+  }
+  void end_step() {
+    run_phases(Space{}, store_.size(), step_phases(params_.dt), kFirstForcePhase, kPostForcePhase + 1, timer_);
+    ++steps_;
+  }
+  // The particles replaced by `s` with contact states `c` (keyed by permanent ids; a particle
+  // without any starts with none), sorted in and listed as a rebuild does; the counters stay.
+  void reload(const StoreSnapshot<Real>& s, const ContactSnapshot<Real>& c) {
+    store_.restore(s);
+    store_.keep_fields(Integrator::keeps_previous_forces, Features::monitor);
+    if (params_.periodic) store_.keep_images();
+    if (world_.dynamic() || params_.energy_ledger) store_.keep_ledger(Features::thesis_power);
+    first_build();
+    contacts_.restore(c, store_.download_id(), broad_.neighbours());
+  }
+  // The store's arrays and the contact states as they are (no rebuild first: snapshot() does one).
+  StoreSnapshot<Real> store_snapshot() const { return store_.snapshot(); }
+  ContactSnapshot<Real> contact_snapshot() { return contacts_.snapshot(store_.download_id(), broad_.neighbours()); }
+  std::vector<Index> ids() const { return store_.download_id(); }
+  // Rows of every kept real array (ParticleStore::download_rows), indices on the host.
+  void download_rows(const std::vector<Index>& which, std::vector<Real>& out) {
+    from_host(rows_which_, which);
+    store_.download_rows(rows_which_.data(), static_cast<Index>(which.size()), out);
+  }
+  void upload_rows(const std::vector<Index>& which, const std::vector<Real>& in) {
+    from_host(rows_which_, which);
+    store_.upload_rows(rows_which_.data(), static_cast<Index>(which.size()), in);
+  }
+
   // Steps of small systems run as one launch per batch (phases.hpp), unless the phase timer is on
   // (the phases are then timed one by one). Larger systems take one launch per phase and one host
   // round trip per step (the rebuild check), a small share of their step.
@@ -723,7 +766,7 @@ class Simulation {
   PhaseTimer<Space> timer_;
   Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)
   Buffer<std::uint8_t, Space> query_flags_;  // particles_in_box
-  Buffer<Index, Space> query_which_;
+  Buffer<Index, Space> query_which_, rows_which_;
   Buffer<Real, Space> query_out_;
   std::uint64_t batch_ = kMinBatch;
   Index initial_count_ = 0;

@@ -37,6 +37,13 @@ struct Gather {
   const Index* perm;
   BLAZE_HD void operator()(Index i) const { dst[i] = src[perm[i]]; }
 };
+template <class T>
+struct Scatter {
+  const T* src;
+  T* dst;
+  const Index* perm;
+  BLAZE_HD void operator()(Index i) const { dst[perm[i]] = src[i]; }
+};
 
 // Every array of a ParticleStore that carries state across steps, on the host, raw (inverse mass
 // and inertia as stored, so a round trip is exact) and in the store's order: what a checkpoint
@@ -253,6 +260,38 @@ class ParticleStore {
     scratch_real_.resize(n_);
   }
 
+  // The rows `which` (store indices, on the space) of every real array kept, array after array
+  // (count values each): what a ghost's copy needs of its particle each step (issue 21; the
+  // distributed driver); upload_rows() writes such rows back at other indices.
+  std::size_t kept_real_fields() {
+    std::size_t k = 0;
+    for (auto* f : real_fields()) k += f->size() > 0;
+    return k;
+  }
+  void download_rows(const Index* which, Index count, std::vector<Real>& out) {
+    out.resize(kept_real_fields() * static_cast<std::size_t>(count));
+    rows_.resize(std::max<std::size_t>(rows_.size(), out.size()));
+    std::size_t at = 0;
+    for (auto* f : real_fields()) {
+      if (!f->size()) continue;
+      for_each(Space{}, count, Gather<Real>{f->data(), rows_.data() + at, which});
+      at += static_cast<std::size_t>(count);
+    }
+    copy_n(rows_.data(), out.size(), out.data(), Space{}, Host{});
+  }
+  void upload_rows(const Index* which, Index count, const std::vector<Real>& in) {
+    if (in.size() != kept_real_fields() * static_cast<std::size_t>(count))
+      throw std::invalid_argument("particle store: " + std::to_string(in.size()) + " row values for " + std::to_string(count) + " rows");
+    rows_.resize(std::max<std::size_t>(rows_.size(), in.size()));
+    copy_n(in.data(), in.size(), rows_.data(), Host{}, Space{});
+    std::size_t at = 0;
+    for (auto* f : real_fields()) {
+      if (!f->size()) continue;
+      for_each(Space{}, count, Scatter<Real>{rows_.data() + at, f->data(), which});
+      at += static_cast<std::size_t>(count);
+    }
+  }
+
   // Periodic runs keep each particle's image counts (zero for those that have none yet), permuted
   // with the particles and in snapshots.
   void keep_images() {
@@ -397,6 +436,7 @@ class ParticleStore {
     for (auto& c : f) permute_one(c, scratch_real_, perm);
   }
 
+  Buffer<Real, Space> rows_;  // download_rows / upload_rows staging
   Index n_ = 0;
   // Which optional fields this store keeps (their buffers are empty while it holds no particle).
   bool with_previous_ = false, with_penetration_ = false, with_ledger_ = false, with_thesis_ = false, with_images_ = false;
