@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <vector>
