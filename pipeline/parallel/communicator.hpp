@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <stdexcept>
 #include <string>
@@ -25,17 +26,42 @@ struct CommunicatorError : std::runtime_error {
 
 class Communicator {
  public:
+  // Every rank of the run (MPI_COMM_WORLD).
   Communicator() {
 #if BLAZE_MPI
     int on = 0;
     MPI_Initialized(&on);
     if (!on) throw CommunicatorError("communicator: MPI is not initialised (MpiSession in main)");
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    comm_ = std::make_shared<MPI_Comm>(MPI_COMM_WORLD);
+    MPI_Comm_rank(*comm_, &rank_);
+    MPI_Comm_size(*comm_, &size_);
 #endif
   }
   int rank() const { return rank_; }
   int size() const { return size_; }
+  // Collective: the first n ranks as a run of their own (a restart onto fewer ranks, tests); on the
+  // others a communicator of no ranks (size 0), which must not be used.
+  Communicator first(int n) const {
+    if (n < 1 || n > size_) throw CommunicatorError("communicator: the first " + std::to_string(n) + " of " + std::to_string(size_) + " ranks");
+    Communicator c = *this;
+#if BLAZE_MPI
+    MPI_Comm sub = MPI_COMM_NULL;
+    check(MPI_Comm_split(*comm_, rank_ < n ? 0 : MPI_UNDEFINED, rank_, &sub), "MPI_Comm_split");
+    if (sub == MPI_COMM_NULL) {
+      c.comm_.reset(), c.rank_ = -1, c.size_ = 0;
+      return c;
+    }
+    c.comm_ = std::shared_ptr<MPI_Comm>(new MPI_Comm(sub), [](MPI_Comm* m) {
+      int finalized = 0;
+      MPI_Finalized(&finalized);
+      if (!finalized) MPI_Comm_free(m);
+      delete m;
+    });
+    MPI_Comm_rank(sub, &c.rank_);
+    MPI_Comm_size(sub, &c.size_);
+#endif
+    return c;
+  }
 
   std::vector<std::string> exchange(const std::vector<std::string>& out) const {
     if (out.size() != static_cast<std::size_t>(size_))
@@ -53,7 +79,7 @@ class Communicator {
       send_n[static_cast<std::size_t>(r)] = static_cast<int>(m.size());
       send += m;
     }
-    check(MPI_Alltoall(send_n.data(), 1, MPI_INT, recv_n.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Alltoall");
+    check(MPI_Alltoall(send_n.data(), 1, MPI_INT, recv_n.data(), 1, MPI_INT, *comm_), "MPI_Alltoall");
     long total = 0;
     for (int r = 0; r < size_; ++r) {
       recv_at[static_cast<std::size_t>(r)] = static_cast<int>(total);
@@ -63,7 +89,7 @@ class Communicator {
     }
     std::string recv(static_cast<std::size_t>(total), '\0');
     check(MPI_Alltoallv(send.data(), send_n.data(), send_at.data(), MPI_BYTE, recv.data(), recv_n.data(), recv_at.data(), MPI_BYTE,
-                        MPI_COMM_WORLD),
+                        *comm_),
           "MPI_Alltoallv");
     std::vector<std::string> in(static_cast<std::size_t>(size_));
     for (int r = 0; r < size_; ++r)
@@ -85,7 +111,7 @@ class Communicator {
   std::vector<T> all_gather(const T& v) const {
     std::vector<T> all(static_cast<std::size_t>(size_));
 #if BLAZE_MPI
-    check(MPI_Allgather(&v, sizeof(T), MPI_BYTE, all.data(), sizeof(T), MPI_BYTE, MPI_COMM_WORLD), "MPI_Allgather");
+    check(MPI_Allgather(&v, sizeof(T), MPI_BYTE, all.data(), sizeof(T), MPI_BYTE, *comm_), "MPI_Allgather");
 #else
     all[0] = v;
 #endif
@@ -98,7 +124,7 @@ class Communicator {
   }
   void barrier() const {
 #if BLAZE_MPI
-    check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+    check(MPI_Barrier(*comm_), "MPI_Barrier");
 #endif
   }
 
@@ -109,7 +135,7 @@ class Communicator {
 #if BLAZE_MPI
     T out{};
     const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : MPI_LONG;
-    check(MPI_Allreduce(&v, &out, 1, type, op == kSum ? MPI_SUM : op == kMax ? MPI_MAX : MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+    check(MPI_Allreduce(&v, &out, 1, type, op == kSum ? MPI_SUM : op == kMax ? MPI_MAX : MPI_MIN, *comm_), "MPI_Allreduce");
     return out;
 #else
     (void)op;
@@ -122,6 +148,9 @@ class Communicator {
   }
 #endif
   int rank_ = 0, size_ = 1;
+#if BLAZE_MPI
+  std::shared_ptr<MPI_Comm> comm_;  // shared by copies; a split one freed with its last copy
+#endif
 };
 
 #if BLAZE_MPI

@@ -27,6 +27,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <filesystem>
+#include "blaze/io/checkpoint.hpp"
 #include "pipeline/parallel/migration.hpp"
 #include "pipeline/simulation.hpp"
 
@@ -50,31 +52,93 @@ class DistributedSimulation {
     std::vector<Vec3<double>> x(all.size());
     for (std::size_t k = 0; k < all.size(); ++k) x[k] = vec_cast<double>(all.position[k]);
     decomposition_ = Decomposition::make(kind_, lo_, hi_, comm_.size(), params.periodic, x);
-    // owned (by id) and ghosts (by owner rank, then id): the order the senders use
-    std::vector<Index> order(all.size());
-    std::iota(order.begin(), order.end(), Index{0});
-    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return all.id[static_cast<std::size_t>(a)] < all.id[static_cast<std::size_t>(b)]; });
-    // a particle outside the domain is removed before it is placed (as a one-process run's first
-    // rebuild does), counted once
-    order.erase(std::remove_if(order.begin(), order.end(),
-                               [&](Index k) { return !inside_domain(x[static_cast<std::size_t>(k)]) && (++removed_, true); }),
-                order.end());
-    if (comm_.rank() != 0) removed_ = 0;
-    std::vector<Index> local;
-    for (Index k : order)
-      if (decomposition_.owner(x[static_cast<std::size_t>(k)]) == comm_.rank()) local.push_back(k);
-    const std::size_t owned = local.size();
-    for (int r = 0; r < comm_.size(); ++r)
-      for (Index k : order)
-        if (r != comm_.rank() && decomposition_.owner(x[static_cast<std::size_t>(k)]) == r &&
-            Decomposition::distance2(x[static_cast<std::size_t>(k)], decomposition_.box(comm_.rank())) <= reach_ * reach_)
-          local.push_back(k);
+    std::size_t owned = 0;
+    const std::vector<Index> local = place(x, all.id, owned);
     ParticleState<Real> mine = select_state(all, local);
     SimulationParams<Real> p = params_;
     p.max_radius = r_max;
     sim_ = std::make_unique<Sim>(p, laws, world, mine, shape);
     owned_ids_.assign(mine.id.begin(), mine.id.begin() + static_cast<std::ptrdiff_t>(owned));
     plan_exchange(mine.id, owned);
+  }
+
+  // The run continued from a checkpoint that any number of ranks wrote (write_checkpoint(): the
+  // parts `path`.part<k>of<n>): every rank reads every part and keeps its box's particles, with
+  // their contact states, and ghosts; the next step is the step the writers would have taken, up
+  // to the rounding of another decomposition (bitwise on the same one).
+  template <class Laws, class Shape>
+  DistributedSimulation(const Communicator& comm, const SimulationParams<Real>& params, const Laws& laws, const World<Real>& world,
+                        const std::string& path, const Shape& shape, DecompositionKind kind = DecompositionKind::bisection,
+                        double rebalance_above = 1.2)
+      : comm_(comm), kind_(kind), rebalance_above_(rebalance_above), params_(check(params)) {
+    const int parts = checkpoint_parts(path);
+    ParticleRecords<Real> all;
+    SimulationSnapshot<Real> counters;
+    for (int k = 0; k < parts; ++k) {
+      const Checkpoint<Real> c = read_checkpoint<Real>(part_path(path, k, parts));
+      if (k == 0) counters = c.snapshot;
+      else if (c.snapshot.steps != counters.steps)
+        throw CheckpointError(part_path(path, k, parts) + ": written at step " + std::to_string(c.snapshot.steps) + ", part 0 at step " +
+                              std::to_string(counters.steps));
+      else counters.removed_count += c.snapshot.removed_count;
+      append_records(all, ParticleRecords<Real>{c.snapshot.store, c.snapshot.contacts});
+    }
+    Real r_max = params.max_radius;
+    for (Real r : all.store.reals.at(StoreSnapshot<Real>::kRadiusField)) r_max = std::max(r_max, r);
+    reach_ = 2 * static_cast<double>(r_max) + static_cast<double>(params.skin);
+    lo_ = vec_cast<double>(params.domain_lo), hi_ = vec_cast<double>(params.domain_hi);
+    std::vector<Vec3<double>> x(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k) x[k] = record_position(all.store, k);
+    decomposition_ = Decomposition::make(kind_, lo_, hi_, comm_.size(), params.periodic, x);
+    std::size_t owned = 0;
+    const std::vector<Index> local = place(x, all.store.id, owned);
+    const std::vector<Index> owned_part(local.begin(), local.begin() + static_cast<std::ptrdiff_t>(owned));
+    ParticleRecords<Real> mine = select_records(all.store, all.contacts, owned_part);
+    append_records(mine, select_records(all.store, all.contacts, std::vector<Index>(local.begin() + static_cast<std::ptrdiff_t>(owned), local.end()), false));
+    SimulationSnapshot<Real> snap = counters;
+    snap.store = mine.store, snap.contacts = mine.contacts;
+    if (comm_.rank() == 0) removed_ += counters.removed_count;
+    SimulationParams<Real> p = params_;
+    p.max_radius = r_max;
+    sim_ = std::make_unique<Sim>(p, laws, world, snap, shape);
+    owned_ids_.assign(mine.store.id.begin(), mine.store.id.begin() + static_cast<std::ptrdiff_t>(owned));
+    plan_exchange(mine.store.id, owned);
+  }
+
+  // Collective: each rank writes its particles (owned, with their contact states) and counters to
+  // `path`.part<rank>of<ranks> (io/checkpoint.hpp: atomically, checksummed); returns when all have.
+  void write_checkpoint(const std::string& path, const std::string& text = "") {
+    const StoreSnapshot<Real> store = sim_->store_snapshot();
+    const ContactSnapshot<Real> contacts = sim_->contact_snapshot();
+    std::vector<Index> mine;
+    for (std::size_t k = 0; k < store.id.size(); ++k)
+      if (std::binary_search(owned_ids_.begin(), owned_ids_.end(), store.id[k])) mine.push_back(static_cast<Index>(k));
+    const ParticleRecords<Real> r = select_records(store, contacts, mine);
+    SimulationSnapshot<Real> s;
+    s.store = r.store, s.contacts = r.contacts, s.steps = steps(), s.removed_count = removed_;
+    s.initial_count = static_cast<Index>(r.size());
+    blaze::write_checkpoint(part_path(path, comm_.rank(), comm_.size()), s, text);
+    comm_.barrier();
+  }
+  static std::string part_path(const std::string& path, int rank, int ranks) {
+    return path + ".part" + std::to_string(rank) + "of" + std::to_string(ranks);
+  }
+  // How many parts the checkpoint at `path` has (its files `path`.part0of<n>).
+  static int checkpoint_parts(const std::string& path) {
+    const std::filesystem::path p(path);
+    const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+    const std::string stem = p.filename().string() + ".part0of";
+    int parts = 0;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind(stem, 0) == 0 && name.size() > stem.size() && name.find_first_not_of("0123456789", stem.size()) == std::string::npos) {
+        if (parts) throw CheckpointError(path + ": parts of more than one checkpoint (" + stem + std::to_string(parts) + " and " + name + ")");
+        parts = std::stoi(name.substr(stem.size()));
+      }
+    }
+    if (parts < 1) throw CheckpointError(path + ": no checkpoint parts (" + stem + "<n>) in " + dir.string());
+    return parts;
   }
 
   Sim& local() { return *sim_; }
@@ -132,6 +196,31 @@ class DistributedSimulation {
       out.inertia.push_back(s.inertia[u]), out.material.push_back(s.material[u]), out.type.push_back(s.type[u]), out.id.push_back(s.id[u]);
     }
     return out;
+  }
+
+  // This rank's particles among all (positions x, ids): those its box holds in id order (`owned`
+  // of them), then the ghosts, in (owner rank, id) order: the order each owner sends them in. A
+  // particle outside the domain is removed here (counted once, on rank 0), as a one-process run's
+  // first rebuild does.
+  std::vector<Index> place(const std::vector<Vec3<double>>& x, const std::vector<Index>& id, std::size_t& owned) {
+    std::vector<Index> order(x.size());
+    std::iota(order.begin(), order.end(), Index{0});
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return id[static_cast<std::size_t>(a)] < id[static_cast<std::size_t>(b)]; });
+    Index outside = 0;
+    order.erase(std::remove_if(order.begin(), order.end(),
+                               [&](Index k) { return !inside_domain(x[static_cast<std::size_t>(k)]) && (++outside, true); }),
+                order.end());
+    if (comm_.rank() == 0) removed_ += outside;
+    std::vector<Index> local;
+    for (Index k : order)
+      if (decomposition_.owner(x[static_cast<std::size_t>(k)]) == comm_.rank()) local.push_back(k);
+    owned = local.size();
+    for (int r = 0; r < comm_.size(); ++r)
+      for (Index k : order)
+        if (r != comm_.rank() && decomposition_.owner(x[static_cast<std::size_t>(k)]) == r &&
+            Decomposition::distance2(x[static_cast<std::size_t>(k)], decomposition_.box(comm_.rank())) <= reach_ * reach_)
+          local.push_back(k);
+    return local;
   }
 
   // The exchange's plan from the local store's ids (owned first, `owned` of them, then ghosts in

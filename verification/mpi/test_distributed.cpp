@@ -5,11 +5,17 @@
 //   of touching pairs is the one-process run's, and positions and velocities agree to rounding
 //   (the ranks sum a particle's contact forces in another order: ~1e-16 a step, grown by the
 //   bed's chaos); the particle count, mass and momentum are the one-process run's.
+// - A run on two ranks writes its checkpoint (one part a rank) at step 300; three ranks read it
+//   and go on to step 600: positions agree with the one-process run's to rounding, none lost
+//   (fewer ranks under mpirun: 1 onto 1, 2 onto 2).
 // - Particles cross the boxes' faces, edges and corners as the bed falls and spreads (bisection
 //   on 4 ranks: four boxes meet along a vertical edge) and the ghosts are refreshed every step.
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <set>
@@ -159,6 +165,52 @@ BOOST_AUTO_TEST_CASE(a_settling_bed_over_ranks_moves_as_in_one_process) {
   BOOST_TEST(many.total() == static_cast<long>(start.size()));  // none escaped the box
   BOOST_TEST(one.state().size() == start.size());
   BOOST_TEST(worst_v < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(a_checkpoint_of_two_ranks_restarts_on_three) {
+  const Communicator world;
+  const int writers = std::min(2, world.size()), readers = std::min(3, world.size());
+  const double r = 0.0025, half = 0.06;
+  const Hertz<double> hertz = Hertz<double>::from_restitution(5e7, 0.5);
+  const Law law{hertz, TangentialSpring<double>::mindlin(0.4, 5e7 / 1.5 / 2.5, 0.5)};
+  auto prm = params<double>(2e-5, {0, -9.81, 0}, 0.2, 0.2 * r);
+  prm.domain_lo = {-half - 0.01, -0.01, -half - 0.01}, prm.domain_hi = {half + 0.01, 0.45, half + 0.01};
+  const ParticleState<double> start = falling_bed(r);
+  const World<double> box = open_box(half);
+  Sim one(prm, one_law(law), box, start);
+  one.run(600);
+  const ParticleState<double> ref = one.state();
+  const std::string path = (std::filesystem::temp_directory_path() / ("blaze_restart_" + std::to_string(world.all_gather(static_cast<long>(getpid()))[0]))).string();
+  const Communicator first = world.first(writers);
+  if (world.rank() < writers) {
+    DistributedSimulation<Sim> run(first, prm, one_law(law), box, start, SphereShape{});
+    run.run(300);
+    run.write_checkpoint(path, "test");
+  }
+  world.barrier();
+  const Communicator second = world.first(readers);
+  double worst = 0;
+  long count = 0;
+  if (world.rank() < readers) {
+    DistributedSimulation<Sim> resumed(second, prm, one_law(law), box, path, SphereShape{});
+    BOOST_TEST(resumed.steps() == 300u);
+    resumed.run(300);
+    const auto got = gather_owned(second, resumed.owned_state());
+    count = static_cast<long>(got.size());
+    for (std::size_t k = 0; k < ref.size(); ++k) {
+      const auto it = got.find(ref.id[k]);
+      worst = it == got.end() ? 1.0 : std::fmax(worst, norm(it->second.first - ref.position[k]) / r);
+    }
+  }
+  worst = world.max(worst), count = world.max(count);
+  world.barrier();
+  if (world.rank() == 0)
+    for (int k = 0; k < writers; ++k) std::filesystem::remove(DistributedSimulation<Sim>::part_path(path, k, writers));
+  const std::string label = ", " + std::to_string(writers) + " onto " + std::to_string(readers) + " ranks";
+  BOOST_TEST_MESSAGE("restart" << label << ": worst |x - x_one| / r " << worst << " at step 600, " << count << " particles");
+  check_at_most({kCase, "max |x - x_one| / r at step 600 after a checkpoint at 300" + label, "-", "parts read by any number of ranks"},
+                worst, tol::distributed_positions);
+  BOOST_TEST(count == static_cast<long>(start.size()));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
