@@ -144,6 +144,31 @@ struct BuildNeighbours {
   }
 };
 
+// Canonical order (issue 21): particle i's entries sorted by their permanent ids (insertion sort,
+// image codes carried along), so its contact forces are summed in one order however the particles
+// lie in memory: a run over several ranks (each with its own memory order) or one process give
+// bitwise the same forces, and so the same trajectory.
+template <class Real>
+struct SortNeighboursById {
+  NeighbourView list;
+  PeriodicImages<Real> images;
+  const Index* id;
+  BLAZE_HD void operator()(Index i) const {
+    const Index count = min_r(list.count[i], list.capacity);
+    for (Index k = 1; k < count; ++k) {
+      const Index j = list.at(k, i), key = id[j];
+      const std::uint8_t code = images.code ? images.code[list.offset(k, i)] : std::uint8_t{0};
+      Index m = k;
+      for (; m > 0 && id[list.at(m - 1, i)] > key; --m) {
+        list.at(m, i) = list.at(m - 1, i);
+        if (images.code) images.code[list.offset(m, i)] = images.code[list.offset(m - 1, i)];
+      }
+      list.at(m, i) = j;
+      if (images.code) images.code[list.offset(m, i)] = code;
+    }
+  }
+};
+
 // The reverse index of entries (k, i) with j < i: the k' with list.at(k', j) == i (a short search
 // of j's list, at each build). Run as a reduction that also checks the list's symmetry, which
 // the pair kernels rely on: 1 if some j does not list i back (in either direction, a bug the

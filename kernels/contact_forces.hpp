@@ -3,7 +3,9 @@
 // write only i's force and torque (eq. 2.4: T = r x F). Each pair is evaluated from both sides, so
 // no atomics are needed and the summation order is the same on every backend. Both sides call
 // collide(lower index, higher index) and the higher one flips the normal, so the two see exactly
-// the same geometry (Newton's third law holds to the last bit of the geometry).
+// the same geometry (Newton's third law holds to the last bit of the geometry). With `by_id`
+// (SimulationParams::canonical_order) "lower" is by permanent id instead of memory index, so the
+// pair is formed the same way wherever the two lie in memory (runs over ranks, issue 21).
 // A law with history (contact_state.hpp) loads each touching pair's state from i's own copy
 // (contact_history.hpp), updates it and stores it back; an open pair's state is forgotten.
 // Across a periodic boundary the pair is taken beside its lower index (grid/periodic_images.hpp).
@@ -29,6 +31,7 @@ struct ContactForces {
   PairHistoryView<Real, Law::State::kReals> history;  // i's own copy of each pair's state (contact_history.hpp)
   Real dt;
   PeriodicImages<Real> images;  // periodic axes: the pair in its lower index's frame (periodic_images.hpp)
+  bool by_id = false;           // the lower of a pair by permanent id, not by index
 
   BLAZE_HD void operator()(Index i) const {
     const auto side = pair_side<Features>(shape, p, i);
@@ -41,7 +44,7 @@ struct ContactForces {
       auto a = side;
       images.place(s, i, j, a.body.x, bj.x);
       decltype(shape.collide(a.body, bj)) g;  // ContactGeometry, or PatchGeometry (contact_patch.hpp)
-      if (i < j) {
+      if (by_id ? p.id[i] < p.id[j] : i < j) {
         g = shape.collide(a.body, bj);
       } else {
         g = shape.collide(bj, a.body);

@@ -123,6 +123,8 @@ class BroadPhase {
 
   // Keep the list's reverse index from the next build on (pairs evaluated once).
   void keep_reverse_index() { with_reverse_ = true; }
+  // Sort each particle's list by permanent id at every build (SortNeighboursById: canonical order).
+  void order_by_id() { by_id_ = true; }
   // Keep the previous list through each build (a contact store carries its states over by it).
   void keep_previous_list() { with_previous_ = true; }
   // The list before the last build, in the order before its sort (keep_previous_list()).
@@ -154,6 +156,7 @@ class BroadPhase {
       if (most <= capacity_) break;
       capacity_ = most + most / 4 + 1;  // grow with headroom, rebuild
     }
+    if (by_id_) for_each(Space{}, p.n, SortNeighboursById<Real>{neighbours(), images(), p.id});
     if (with_reverse_) {
       reverse_.resize(std::max<std::size_t>(reverse_.size(), list_.size()));
       if (reduce_max(Space{}, p.n, BuildReverse{neighbours()}, 0) > 0)
@@ -173,7 +176,7 @@ class BroadPhase {
   Buffer<std::uint32_t, Space> cell_start_, cell_end_;
   Buffer<Index, Space> list_, count_, reverse_, previous_list_, previous_count_;
   Buffer<std::uint8_t, Space> images_;  // periodic axes: each list entry's image code
-  bool with_reverse_ = false, with_previous_ = false;
+  bool with_reverse_ = false, with_previous_ = false, by_id_ = false;
   Index previous_stride_ = 0, previous_capacity_ = 0;
   Buffer<Real, Space> reference_[3];
   Index stride_ = 0;

@@ -525,11 +525,12 @@ constexpr double decomposition_volume = 1e-12;
 // the errors of nested cuts add). Measured 0.074 (2-8 ranks, 2026-12); 2x.
 constexpr double decomposition_sampled_imbalance = 0.15;
 // --- runs over ranks (issue 21; verification/mpi/test_distributed.cpp) ---
-// Positions of a settling bed over ranks against one process's, of the radius: the same forces
-// summed in another order (each rank's list order), ~1e-16 a step, grown by the bed's chaos over
-// 1 000 steps. Measured 2.8e-15 (1 rank), 1.4e-11 (2), 1.2e-10 (3), 2.7e-10 (4; 2026-12); a spring
-// lost in a migration or a ghost missing is off by ~1e-3 and more.
-constexpr double distributed_positions = 1e-8;
+// Positions of a run over ranks against one process's, of the radius: each particle's contact
+// forces are summed in its neighbours' id order and each pair formed from its lower id on every
+// rank (canonical order), so the runs are bitwise the same: 0. (Summed in each rank's own list
+// order they agreed to 2.8e-15 to 2.7e-10 r for the spheres over 1 000 steps, and the cubes parted
+// by 1e-3 r by step 800.)
+constexpr double distributed_positions = 0;
 // A surface speed bound against its closed form (omega times a distance, a few operations in
 // double): rounding only, ~1e-16 relative.
 constexpr double surface_speed_closed_form = 1e-12;

@@ -16,7 +16,9 @@
 //   end_step            forces (each rank evaluates every pair of its list; a ghost's own force is
 //                       left unused) and the post-force integration.
 // Pairs are evaluated from both sides (each particle's own copy of a pair's state): with pairs once
-// a ghost's entry would hold its owned partner's state. The world is replicated on every rank.
+// a ghost's entry would hold its owned partner's state. Contact forces are summed in the order of
+// the neighbours' permanent ids (SimulationParams::canonical_order), so the run is bitwise the
+// same on any number of ranks, and bitwise one process's with canonical_order on. The world is replicated on every rank.
 // Between rebuilds no particle moves in memory, so the ghosts' places stay fixed.
 // Without MPI (or on one rank) it is the plain Simulation with the same step order.
 #pragma once
@@ -56,7 +58,7 @@ class DistributedSimulation {
     const std::vector<Index> local = place(x, all.id, owned);
     ParticleState<Real> mine = select_state(all, local);
     SimulationParams<Real> p = params_;
-    p.max_radius = r_max;
+    p.max_radius = r_max, p.canonical_order = true;
     sim_ = std::make_unique<Sim>(p, laws, world, mine, shape);
     owned_ids_.assign(mine.id.begin(), mine.id.begin() + static_cast<std::ptrdiff_t>(owned));
     plan_exchange(mine.id, owned);
@@ -99,7 +101,7 @@ class DistributedSimulation {
     snap.store = mine.store, snap.contacts = mine.contacts;
     if (comm_.rank() == 0) removed_ += counters.removed_count;
     SimulationParams<Real> p = params_;
-    p.max_radius = r_max;
+    p.max_radius = r_max, p.canonical_order = true;
     sim_ = std::make_unique<Sim>(p, laws, world, snap, shape);
     owned_ids_.assign(mine.store.id.begin(), mine.store.id.begin() + static_cast<std::ptrdiff_t>(owned));
     plan_exchange(mine.store.id, owned);
