@@ -62,9 +62,10 @@ struct SimulationParams {
   // its length the period (at least 3 cells of 2 max_radius + skin).
   unsigned periodic = 0;
   // Sum each particle's contact forces in the order of its neighbours' permanent ids (the broad
-  // phase sorts each list at a build): the trajectory then does not depend on where particles lie
-  // in memory, so a run over any number of ranks (pipeline/parallel/) is bitwise one process's
-  // with this on. Off: the list's cell order (cheaper by a sort per list at each rebuild).
+  // phase sorts each list at a build) and form each pair from its lower id (ContactForces::by_id):
+  // a trajectory with pairs from both sides then does not depend on where particles lie in memory,
+  // so a run over any number of ranks (pipeline/parallel/) is bitwise one process's with this on.
+  // Off: the list's cell order and the lower index (cheaper by a sort per list at each rebuild).
   bool canonical_order = false;
 };
 
@@ -717,8 +718,8 @@ class Simulation {
     return {nullptr, nullptr};
   }
   ContactForces<Shape, Law, Kinematics, Features> contact_forces(Real history_dt) {
-    return {shape_,        store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), history_dt, broad_.images(),
-            params_.canonical_order};
+    return {shape_,           store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(),
+            history_dt,       broad_.images(), params_.canonical_order};
   }
   WorldForces<Shape, Law, Kinematics, Features> world_forces(Real history_dt) {
     return {shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), history_dt};

@@ -18,7 +18,8 @@
 // Pairs are evaluated from both sides (each particle's own copy of a pair's state): with pairs once
 // a ghost's entry would hold its owned partner's state. Contact forces are summed in the order of
 // the neighbours' permanent ids (SimulationParams::canonical_order), so the run is bitwise the
-// same on any number of ranks, and bitwise one process's with canonical_order on. The world is replicated on every rank.
+// same on any number of ranks, and bitwise one process's with canonical_order on. The world is
+// replicated on every rank.
 // Between rebuilds no particle moves in memory, so the ghosts' places stay fixed.
 // Without MPI (or on one rank) it is the plain Simulation with the same step order.
 #pragma once
@@ -66,8 +67,8 @@ class DistributedSimulation {
 
   // The run continued from a checkpoint that any number of ranks wrote (write_checkpoint(): the
   // parts `path`.part<k>of<n>): every rank reads every part and keeps its box's particles, with
-  // their contact states, and ghosts; the next step is the step the writers would have taken, up
-  // to the rounding of another decomposition (bitwise on the same one).
+  // their contact states, and ghosts; the next step is bitwise the step the writers would have
+  // taken (canonical order), on any number of ranks.
   template <class Laws, class Shape>
   DistributedSimulation(const Communicator& comm, const SimulationParams<Real>& params, const Laws& laws, const World<Real>& world,
                         const std::string& path, const Shape& shape, DecompositionKind kind = DecompositionKind::bisection,
@@ -108,7 +109,8 @@ class DistributedSimulation {
   }
 
   // Collective: each rank writes its particles (owned, with their contact states) and counters to
-  // `path`.part<rank>of<ranks> (io/checkpoint.hpp: atomically, checksummed); returns when all have.
+  // `path`.part<rank>of<ranks> (io/checkpoint.hpp: atomically, checksummed); returns when all have,
+  // or throws on every rank when any could not (naming the first rank's error).
   void write_checkpoint(const std::string& path, const std::string& text = "") {
     const StoreSnapshot<Real> store = sim_->store_snapshot();
     const ContactSnapshot<Real> contacts = sim_->contact_snapshot();
@@ -119,8 +121,14 @@ class DistributedSimulation {
     SimulationSnapshot<Real> s;
     s.store = r.store, s.contacts = r.contacts, s.steps = steps(), s.removed_count = removed_;
     s.initial_count = static_cast<Index>(r.size());
-    blaze::write_checkpoint(part_path(path, comm_.rank(), comm_.size()), s, text);
-    comm_.barrier();
+    std::string error;
+    try {
+      blaze::write_checkpoint(part_path(path, comm_.rank(), comm_.size()), s, text);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    for (const std::string& e : comm_.all_gather_bytes(error))
+      if (!e.empty()) throw CheckpointError("distributed checkpoint: " + e);
   }
   static std::string part_path(const std::string& path, int rank, int ranks) {
     return path + ".part" + std::to_string(rank) + "of" + std::to_string(ranks);
