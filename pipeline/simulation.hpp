@@ -718,8 +718,8 @@ class Simulation {
     return {nullptr, nullptr};
   }
   ContactForces<Shape, Law, Kinematics, Features> contact_forces(Real history_dt) {
-    return {shape_,           store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(),
-            history_dt,       broad_.images(), params_.canonical_order};
+    return {shape_, store_.view(), broad_.neighbours(), laws_, contact_stats(), contacts_.pairs(), history_dt, broad_.images(),
+            params_.canonical_order};
   }
   WorldForces<Shape, Law, Kinematics, Features> world_forces(Real history_dt) {
     return {shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), history_dt};
