@@ -72,6 +72,17 @@ World<double> open_box(double half) {
   return w;
 }
 
+// The spheres' bed: radius, the box's half width, its Hertz-Mindlin law and the run's parameters
+// (canonical order: the one-process run sums in the ranks' order).
+constexpr double kBedRadius = 0.0025, kBoxHalf = 0.06;
+Law bed_law() { return {Hertz<double>::from_restitution(5e7, 0.5), TangentialSpring<double>::mindlin(0.4, 5e7 / 1.5 / 2.5, 0.5)}; }
+SimulationParams<double> bed_params(double r, double half) {
+  auto prm = params<double>(2e-5, {0, -9.81, 0}, 0.2, 0.2 * r);
+  prm.canonical_order = true;
+  prm.domain_lo = {-half - 0.01, -0.01, -half - 0.01}, prm.domain_hi = {half + 0.01, 0.45, half + 0.01};
+  return prm;
+}
+
 // Every rank's owned particles, gathered, by id: position, velocity.
 std::map<Index, std::pair<Vec3<double>, Vec3<double>>> gather_owned(const Communicator& comm, const ParticleState<double>& mine) {
   std::string bytes;
@@ -127,12 +138,9 @@ BOOST_AUTO_TEST_SUITE(distributed)
 
 BOOST_AUTO_TEST_CASE(a_settling_bed_over_ranks_moves_as_in_one_process) {
   const Communicator comm;
-  const double r = 0.0025, half = 0.06;
-  const Hertz<double> hertz = Hertz<double>::from_restitution(5e7, 0.5);
-  const Law law{hertz, TangentialSpring<double>::mindlin(0.4, 5e7 / 1.5 / 2.5, 0.5)};
-  auto prm = params<double>(2e-5, {0, -9.81, 0}, 0.2, 0.2 * r);
-  prm.canonical_order = true;  // the one-process run sums in the ranks' order
-  prm.domain_lo = {-half - 0.01, -0.01, -half - 0.01}, prm.domain_hi = {half + 0.01, 0.45, half + 0.01};
+  const double r = kBedRadius, half = kBoxHalf;
+  const Law law = bed_law();
+  const SimulationParams<double> prm = bed_params(r, half);
   const ParticleState<double> start = falling_bed(r);
   const World<double> world = open_box(half);
   Sim one(prm, one_law(law), world, start);
@@ -252,12 +260,9 @@ BOOST_AUTO_TEST_CASE(a_bed_of_cubes_over_ranks_moves_as_in_one_process) {
 BOOST_AUTO_TEST_CASE(a_checkpoint_of_two_ranks_restarts_on_three) {
   const Communicator world;
   const int writers = std::min(2, world.size()), readers = std::min(3, world.size());
-  const double r = 0.0025, half = 0.06;
-  const Hertz<double> hertz = Hertz<double>::from_restitution(5e7, 0.5);
-  const Law law{hertz, TangentialSpring<double>::mindlin(0.4, 5e7 / 1.5 / 2.5, 0.5)};
-  auto prm = params<double>(2e-5, {0, -9.81, 0}, 0.2, 0.2 * r);
-  prm.canonical_order = true;  // the one-process run sums in the ranks' order
-  prm.domain_lo = {-half - 0.01, -0.01, -half - 0.01}, prm.domain_hi = {half + 0.01, 0.45, half + 0.01};
+  const double r = kBedRadius, half = kBoxHalf;
+  const Law law = bed_law();
+  const SimulationParams<double> prm = bed_params(r, half);
   const ParticleState<double> start = falling_bed(r);
   const World<double> box = open_box(half);
   Sim one(prm, one_law(law), box, start);
