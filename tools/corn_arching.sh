@@ -10,6 +10,8 @@
 # Usage: tools/corn_arching.sh STUDY_BINARY [DIR]           (DIR defaults to data/hopper/corn)
 #   CORN_SET="feed[0].count=600 ..." adds --set overrides to every run (small trial runs);
 #   CORN_RUN=0 only summarises the runs already in DIR.
+#   CORN_JOBS=N runs N cases at once (default 1; on one GPU a few small runs share it well, more
+#   so under MPS: `nvidia-cuda-mps-control -d`).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$1 dir=${2:-data/hopper/corn}
@@ -37,12 +39,20 @@ for w in $orifices; do
     cases="$cases $case_dir"
     [ "${CORN_RUN:-1}" = 1 ] || continue
     mkdir -p "$case_dir"
-    "$bin" studies/hopper/corn.toml --set "mesh[0].file=\"$stl\"" --set "study.orifice_half_width=$half" \
-      --set "wall[0].vertices=[[-$gate, -0.0005, $gate], [$gate, -0.0005, $gate], [$gate, -0.0005, -$gate], [-$gate, -0.0005, -$gate]]" \
-      --set "simulation.seed=$seed" --set "output.directory=\"$case_dir\"" "${sets[@]}" > "$case_dir.log" 2>&1 \
-      || { echo "corn: W = $w mm seed $seed failed (see $case_dir.log)"; tail -5 "$case_dir.log"; exit 1; }
-    echo "corn: W = $w mm seed $seed: $(grep -a "^arched\|^no arch" "$case_dir.log" | tail -1)"
+    rm -f "$case_dir.failed"
+    while [ "$(jobs -rp | wc -l)" -ge "${CORN_JOBS:-1}" ]; do wait -n || true; done
+    (
+      "$bin" studies/hopper/corn.toml --set "mesh[0].file=\"$stl\"" --set "study.orifice_half_width=$half" \
+        --set "wall[0].vertices=[[-$gate, -0.0005, $gate], [$gate, -0.0005, $gate], [$gate, -0.0005, -$gate], [-$gate, -0.0005, -$gate]]" \
+        --set "simulation.seed=$seed" --set "output.directory=\"$case_dir\"" "${sets[@]}" > "$case_dir.log" 2>&1 \
+        || { echo "corn: W = $w mm seed $seed failed (see $case_dir.log)"; tail -5 "$case_dir.log"; touch "$case_dir.failed"; exit 1; }
+      echo "corn: W = $w mm seed $seed: $(grep -a "^arched\|^no arch" "$case_dir.log" | tail -1)"
+    ) &
   done
+done
+wait || true
+for c in $cases; do
+  [ -e "$c.failed" ] && { rm -f "$c.failed"; echo "corn: a run failed: not summarised"; exit 1; }
 done
 python3 - "$length" "$dir/summary.csv" studies/hopper/corn.md $cases <<'PY'
 import os, re, statistics, sys

@@ -545,6 +545,9 @@ constexpr double mesh_volume_float = 1e-6;
 // One contact from a tilted flat tessellation against one polygon (overlap relative to itself,
 // normal difference): measured 4.8e-14, the normals' last-bit differences (2026-12); 1e-12.
 constexpr double mesh_flat_as_polygon = 1e-12;
+// Sphere-triangle contacts the early out (mesh_surface.hpp) changes: none may change, bitwise (it
+// leaves only where a lower bound of the distance passes r by 1e-3, far beyond rounding).
+constexpr double mesh_early_out_changes = 0;
 // The one contact of a convex mesh against the brute-force nearest point (overlap / r, normal):
 // measured 1.1e-16 (cube) and 2.1e-12 (icospheres: the reference's own projections round);
 // 1e-11 is 5x that.

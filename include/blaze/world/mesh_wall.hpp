@@ -49,6 +49,7 @@ template <class Real>
 struct MeshArrays {
   std::vector<Vec3<Real>> vertex;
   std::vector<Vec3<Real>> normal;
+  std::vector<Vec3<Real>> corner;  // per triangle its three vertices (MeshSurfaceView::corner)
   std::vector<int> triangle, neighbour, adjacency_start, adjacency, bin_start, bin_entry;
   std::vector<MeshObject<Real>> objects;
   std::vector<std::size_t> bin_start_offset, bin_entry_offset;
@@ -79,6 +80,8 @@ MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) 
     const MeshTopology topo = mesh_topology(w.mesh);
     for (const auto& v : w.mesh.vertices) a.vertex.push_back(vec_cast<Real>(v));
     for (const auto& n : triangle_normals(w.mesh)) a.normal.push_back(vec_cast<Real>(n));
+    for (const auto& tri : w.mesh.triangles)
+      for (int k = 0; k < 3; ++k) a.corner.push_back(vec_cast<Real>(w.mesh.vertices[static_cast<std::size_t>(tri[static_cast<std::size_t>(k)])]));
     for (std::size_t t = 0; t < w.mesh.size(); ++t)
       for (int k = 0; k < 3; ++k) {
         a.triangle.push_back(v0 + w.mesh.triangles[t][static_cast<std::size_t>(k)]);
@@ -119,8 +122,7 @@ struct TriangleList {
 // Some point of triangle t of surface s lies within `reach` of x (up to rounding, triangle_distance.hpp).
 template <class Real>
 BLAZE_HD bool triangle_near(const MeshSurfaceView<Real>& s, int t, const Vec3<Real>& x, Real reach) {
-  const int* tri = s.triangle + 3 * t;
-  return triangle_within(x, s.vertex[tri[0]], s.vertex[tri[1]], s.vertex[tri[2]], reach);
+  return triangle_within(x, s.corner_of(t, 0), s.corner_of(t, 1), s.corner_of(t, 2), reach);
 }
 
 // The triangles to test for a particle at x_ref (its mesh's reference frame): its list's

@@ -268,7 +268,7 @@ class WorldStore {
             meshes_.data(),
             nm,
             {mesh_vertex_.data(), mesh_triangle_.data(), mesh_neighbour_.data(), mesh_adjacency_start_.data(), mesh_adjacency_.data(),
-             mesh_normal_.data()},
+             mesh_normal_.data(), mesh_corner_.data()},
             np + nc + nm,
             poses_.data(),
             classes_.size() ? classes_.data() : nullptr};
@@ -294,6 +294,7 @@ class WorldStore {
     if (!w.meshes.empty()) a = mesh_arrays<Real>(w.meshes, reach);
     from_host(mesh_vertex_, a.vertex);
     from_host(mesh_normal_, a.normal);
+    from_host(mesh_corner_, a.corner);
     from_host(mesh_triangle_, a.triangle);
     from_host(mesh_neighbour_, a.neighbour);
     from_host(mesh_adjacency_start_, a.adjacency_start);
@@ -314,7 +315,7 @@ class WorldStore {
   Buffer<std::uint64_t, Space> steps_;
   Buffer<ContactClass, Space> classes_;
   Buffer<MeshObject<Real>, Space> meshes_;
-  Buffer<Vec3<Real>, Space> mesh_vertex_, mesh_normal_;
+  Buffer<Vec3<Real>, Space> mesh_vertex_, mesh_normal_, mesh_corner_;
   Buffer<int, Space> mesh_triangle_, mesh_neighbour_, mesh_adjacency_start_, mesh_adjacency_, mesh_bin_start_, mesh_bin_entry_;
   std::vector<long> longest_cell_;
   bool dynamic_ = false;
