@@ -106,6 +106,16 @@ $(BUILD)/mpi/%.o: %.cpp $(HEADERS)
 	$(MPICXX) $(CXXFLAGS) -DBLAZE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 -c $< -o $@
 $(BUILD)/mpi/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi/%.o)
 	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@ -lboost_unit_test_framework
+# The same suite on the CUDA backend (ranks sharing the GPUs; the GPU machine's header-only
+# Boost.Test): MPI's flags from mpicxx, or MPI_DIR=<prefix with include/ and lib/>.
+MPI_DIR ?=
+MPI_INC ?= $(filter -I%,$(shell $(MPICXX) --showme:compile 2>/dev/null)) $(if $(MPI_DIR),-I$(MPI_DIR)/include)
+MPI_LIB ?= $(filter -L% -l%,$(shell $(MPICXX) --showme:link 2>/dev/null)) $(if $(MPI_DIR),-L$(MPI_DIR)/lib -lmpi)
+$(BUILD)/mpi-cuda/%.o: %.cpp $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(NVCC) $(NVCCFLAGS) -x cu -DBLAZE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 $(MPI_INC) -c $< -o $@
+$(BUILD)/mpi-cuda/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi-cuda/%.o)
+	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp,-pthread $^ -o $@ $(MPI_LIB)
 $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 	$(CXX) $(LDFLAGS_cpu) $^ -o $@
 $(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o

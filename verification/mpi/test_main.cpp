@@ -5,7 +5,11 @@
 #define BOOST_TEST_MODULE blaze_mpi_verification
 #define BOOST_TEST_NO_MAIN
 #define BOOST_TEST_ALTERNATIVE_INIT_API
+#if defined(BLAZE_TEST_HEADER_ONLY)
+#include <boost/test/included/unit_test.hpp>  // GPU machine: Boost headers only
+#else
 #include <boost/test/unit_test.hpp>
+#endif
 #include <cstdlib>
 #include "pipeline/parallel/communicator.hpp"
 
