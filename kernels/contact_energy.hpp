@@ -8,6 +8,8 @@
 //   walls  sum over i's contacts with world objects (world_contacts.hpp: a mesh's merged ones) of
 //          Law(m_i, m_w).stored_energy(contact, state)                                   [J]
 //   wall_contacts  the number of those contacts.
+// With `counted` (a rank's own particles flagged, its ghosts not: kernels/sample_tally.hpp) a pair
+// with a ghost is held by the lower permanent id, so over all ranks each pair counts once.
 // The energies are formed in double (the law's stored_energy returns double) and written per
 // particle; reduce_in_order (exec/primitives.hpp, through kernels/sample_tally.hpp) adds them in
 // a fixed order per backend, so the total is deterministic (no atomics) and the backends agree up
@@ -43,6 +45,7 @@ struct StoredContactEnergy {
   PairHistoryView<Real, Law::State::kReals> history;  // a tangential spring's energy is in the state
   WallHistoryView<Real, Law::State::kReals> wall_history;
   PeriodicImages<Real> images;  // periodic axes (grid/periodic_images.hpp)
+  const std::uint8_t* counted = nullptr;
 
   BLAZE_HD void operator()(Index i) const {
     const auto bi = shape.body(p, i);
@@ -52,7 +55,8 @@ struct StoredContactEnergy {
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
-      if (j < i) continue;  // j's thread holds this pair
+      const bool j_counts = !counted || counted[j];
+      if (j_counts ? j < i : p.id[j] < p.id[i]) continue;  // j's thread (or j's rank) holds this pair
       auto bj = shape.body(p, j);
       if (images.on()) bj.x = bj.x + images.shift(list.offset(k, i));  // j's image beside i
       const ContactGeometry<Real> g = shape.collide(bi, bj);

@@ -13,6 +13,8 @@
 //                                         blaze/particles/energy_ledger.hpp), when kept     [J]
 //   thesis_estimate                       the thesis's sum |F_diss| |V| dt, when kept        [J]
 // reduce_in_order (exec/primitives.hpp) folds them deterministically.
+// `counted` (null: every particle) leaves out the particles marked 0: a rank's ghost copies of
+// other ranks' particles (pipeline/parallel/distributed_simulation.hpp), which their owners count.
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "blaze/particles/particle_store.hpp"
@@ -52,9 +54,11 @@ struct ParticleTally {
   const Index* vertex_face;
   const Index* edge_edge;
   double threshold;
+  const std::uint8_t* counted = nullptr;
 
   BLAZE_HD SampleTally operator()(Index i) const {
     SampleTally t;
+    if (counted && !counted[i]) return t;
     const Real m = Real(1) / p.inv_mass[i];
     const Energies e = body_energies(static_cast<double>(m), p.velocity.get(i), p.orientation.get(i),
                                      p.angular_velocity.get(i), shape.principal_inertia(p.inv_inertia[i], p.radius[i], p.type[i]),

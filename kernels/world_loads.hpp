@@ -9,7 +9,8 @@
 //   F_w = - sum F_c                                  [N]
 //   T_w = - sum (p_c x F_c + M_c)                    [N m], about the origin
 // (about a point q: T_q = T_w - q x F_w). Up to kLoadObjects objects per pass; reduce_in_order
-// (exec/primitives.hpp) folds the particles' shares deterministically.
+// (exec/primitives.hpp) folds the particles' shares deterministically. `counted` (null: all)
+// leaves out a rank's ghost particles, as in sample_tally.hpp.
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "blaze/laws/contact_law.hpp"
@@ -42,9 +43,11 @@ struct WorldLoads {
   Real dt;                   // s, the step's
   int object[kLoadObjects];  // the objects reported; -1: none
   int count;
+  const std::uint8_t* counted = nullptr;
 
   BLAZE_HD LoadTally operator()(Index i) const {
     LoadTally t;
+    if (counted && !counted[i]) return t;
     const auto body = shape.body(p, i);
     for_each_world_contact(shape, body, world, i, [&](const auto& g, int material, int w, WallKey key, const auto*) {
       if (!g.touching) return;

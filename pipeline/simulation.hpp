@@ -257,6 +257,17 @@ class Simulation {
   StoreSnapshot<Real> store_snapshot() const { return store_.snapshot(); }
   ContactSnapshot<Real> contact_snapshot() { return contacts_.snapshot(store_.download_id(), broad_.neighbours()); }
   std::vector<Index> ids() const { return store_.download_id(); }
+  // The particles the samples and world loads count (sample(), world_loads()): a flag per
+  // particle in the store's order as it is now (a rank's own particles, not its ghosts:
+  // pipeline/parallel/distributed_simulation.hpp); until the store next changes order or size.
+  // Empty: every particle (the default).
+  void count_only(const std::vector<std::uint8_t>& flags) {
+    if (!flags.empty() && flags.size() != static_cast<std::size_t>(store_.size()))
+      throw std::invalid_argument("simulation: count_only needs a flag per particle (" + std::to_string(store_.size()) + "), got " +
+                                  std::to_string(flags.size()));
+    from_host(counted_, flags);
+    counted_order_ = flags.empty() ? 0 : reorders_;
+  }
   // Rows of every kept real array (ParticleStore::download_rows), indices on the host.
   void download_rows(const std::vector<Index>& which, std::vector<Real>& out) {
     from_host(rows_which_, which);
@@ -309,7 +320,8 @@ class Simulation {
   std::vector<WorldLoad> world_loads(const std::vector<int>& objects) {
     std::vector<WorldLoad> out;
     for (std::size_t first = 0; first < objects.size(); first += kLoadObjects) {
-      WorldLoads<Shape, Law, Kinematics, Features> f{shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), params_.dt, {}, 0};
+      WorldLoads<Shape, Law, Kinematics, Features> f{shape_, store_.view(), lists_.attach(world_.view()), laws_, contacts_.walls(), params_.dt, {}, 0,
+                                                     counted()};
       for (int k = 0; k < kLoadObjects; ++k) f.object[k] = -1;
       for (std::size_t k = first; k < objects.size() && k < first + kLoadObjects; ++k) f.object[f.count++] = objects[k];
       const LoadTally t = reduce_in_order(Space{}, store_.size(), f, load_parts_);
@@ -334,6 +346,7 @@ class Simulation {
     double mass = 0;        // kg, of the particles present
     ContactEnergy stored;   // J, the open contacts' elastic energy; world contacts
     long vertex_face = 0, edge_edge = 0;  // particle-particle contacts by kind, each pair once
+    long vertex_face_sides = 0, edge_edge_sides = 0;  // the same from both sides (summed over ranks, then halved)
     PenetrationReport penetration;
     // The energy accounts since the last sample (blaze/particles/energy_ledger.hpp), when kept:
     bool ledger = false;
@@ -354,7 +367,8 @@ class Simulation {
     s.mass = t.mass;
     s.stored = stored_energy(t);
     if (stats_vertex_face_.size() >= static_cast<std::size_t>(store_.size()))
-      s.vertex_face = static_cast<long>(t.vertex_face / 2), s.edge_edge = static_cast<long>(t.edge_edge / 2);
+      s.vertex_face = static_cast<long>(t.vertex_face / 2), s.edge_edge = static_cast<long>(t.edge_edge / 2),
+      s.vertex_face_sides = static_cast<long>(t.vertex_face), s.edge_edge_sides = static_cast<long>(t.edge_edge);
     s.penetration = penetration(t);
     s.ledger = store_.keeps_ledger();
     s.drive_work = t.ledger[kLedgerDrive];
@@ -399,7 +413,9 @@ class Simulation {
   // in, contact states carried over; the run's trajectory does not depend on where in memory they
   // landed). The caller placed them where they overlap nothing. Refused: a bounding radius above
   // max_radius(), a material without laws, a state that is not finite.
-  void insert(ParticleState<Real> add) {
+  // keep_ids: the particles come with their permanent ids (a run over ranks gives every rank's
+  // part of a batch the ids one process would: pipeline/parallel/distributed_simulation.hpp).
+  void insert(ParticleState<Real> add, bool keep_ids = false) {
     if (add.size() == 0) return;
     check_materials(laws_, World<Real>{}, add);
     check_finite(add, steps_);
@@ -407,7 +423,8 @@ class Simulation {
       if (!(add.radius[k] > 0 && add.radius[k] <= r_max_))
         throw std::invalid_argument("simulation: an inserted particle's radius " + std::to_string(add.radius[k]) +
                                     " m is outside (0, max_radius = " + std::to_string(r_max_) + " m] (SimulationParams::max_radius)");
-      add.id[k] = next_id_++;
+      if (keep_ids) next_id_ = std::max(next_id_, add.id[k] + 1);
+      else add.id[k] = next_id_++;
       const double m = static_cast<double>(add.mass[k]);
       const Vec3<double> x = vec_cast<double>(add.position[k]), v = vec_cast<double>(add.velocity[k]);
       const Vec3<double> w = vec_cast<double>(add.angular_velocity[k]);
@@ -581,6 +598,7 @@ class Simulation {
   // Hash, sort, reorder, new list (broad_phase.hpp), and the contact store carried over to it.
   // with_forces: force and torque move too (between steps).
   void rebuild(bool with_forces) {
+    ++reorders_;
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity, with_forces));
     build_world_lists();
     if constexpr (Law::kHistory)
@@ -634,6 +652,7 @@ class Simulation {
   // The first neighbour list (a new run, or a restored one: the same positions in the same order
   // rebuild the same list).
   void first_build() {
+    ++reorders_;
     if (broad_.rebuild_check(store_) == 2) throw_non_finite(steps_);
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
     build_world_lists();
@@ -682,16 +701,23 @@ class Simulation {
     return s;
   }
   // The sample's reduction; with_energy runs StoredContactEnergy first (its per-particle slots).
+  // count_only's flags (null: count every particle); flags set for an order the store has left
+  // are an error, never silently all.
+  const std::uint8_t* counted() const {
+    if (counted_order_ == 0) return nullptr;
+    if (counted_order_ != reorders_) throw std::logic_error("simulation: count_only's flags are for an order the store has left");
+    return counted_.data();
+  }
   SampleTally tally(bool with_energy, double threshold) {
     const Index n = store_.size();
-    ParticleTally<Shape, Real> f{shape_, store_.view(), params_.gravity, nullptr, nullptr, nullptr, nullptr, nullptr, threshold};
+    ParticleTally<Shape, Real> f{shape_, store_.view(), params_.gravity, nullptr, nullptr, nullptr, nullptr, nullptr, threshold, counted()};
     if (with_energy) {
       for (auto* b : {&energy_pairs_, &energy_walls_})
         b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
       energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
       const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
       for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), lists_.attach(world_.view()), laws_,
-                                                           slots, contacts_.pairs(), contacts_.walls(), broad_.images()});
+                                                           slots, contacts_.pairs(), contacts_.walls(), broad_.images(), counted()});
       f.pair_energy = energy_pairs_.data(), f.wall_energy = energy_walls_.data(), f.wall_contacts = energy_wall_contacts_.data();
     }
     if constexpr (Features::statistics)
@@ -775,6 +801,8 @@ class Simulation {
   PhaseTimer<Space> timer_;
   Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)
   Buffer<std::uint8_t, Space> query_flags_;  // particles_in_box
+  Buffer<std::uint8_t, Space> counted_;      // count_only's flags, for the store's order numbered counted_order_
+  std::uint64_t reorders_ = 1, counted_order_ = 0;
   Buffer<Index, Space> query_which_, rows_which_;
   Buffer<Real, Space> query_out_;
   std::uint64_t batch_ = kMinBatch;

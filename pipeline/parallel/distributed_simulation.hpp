@@ -22,6 +22,13 @@
 // replicated on every rank.
 // Between rebuilds no particle moves in memory, so the ghosts' places stay fixed.
 // Without MPI (or on one rank) it is the plain Simulation with the same step order.
+// What a run's output reads (sample, world_loads, size, removed and inserted counters: RunLog,
+// `blaze run`) is reduced over the ranks, each counting only its own particles (Simulation::
+// count_only: a pair with a ghost counts on the rank of its lower id), in rank order, so every
+// rank gets the same numbers and the guards stop every rank together. Feeders (pipeline/
+// feeder.hpp) run on every rank alike: particles_in_box gathers what is present from all ranks,
+// every rank places the same batch, and insert() keeps each rank's part with the ids one process
+// would give.
 #pragma once
 #include <algorithm>
 #include <map>
@@ -50,6 +57,7 @@ class DistributedSimulation {
       : comm_(comm), kind_(kind), rebalance_above_(rebalance_above), params_(check(params)) {
     Real r_max = params.max_radius;
     for (Real r : all.radius) r_max = std::max(r_max, r);
+    for (Index id : all.id) next_id_ = std::max(next_id_, id + 1);
     reach_ = 2 * static_cast<double>(r_max) + static_cast<double>(params.skin);
     lo_ = vec_cast<double>(params.domain_lo), hi_ = vec_cast<double>(params.domain_hi);
     std::vector<Vec3<double>> x(all.size());
@@ -79,11 +87,16 @@ class DistributedSimulation {
     SimulationSnapshot<Real> counters;
     for (int k = 0; k < parts; ++k) {
       const Checkpoint<Real> c = read_checkpoint<Real>(part_path(path, k, parts));
-      if (k == 0) counters = c.snapshot;
+      if (k == 0) counters = c.snapshot, text_ = c.text, feeders_ = c.feeders;
       else if (c.snapshot.steps != counters.steps)
         throw CheckpointError(part_path(path, k, parts) + ": written at step " + std::to_string(c.snapshot.steps) + ", part 0 at step " +
                               std::to_string(counters.steps));
-      else counters.removed_count += c.snapshot.removed_count;
+      else
+        counters.removed_count += c.snapshot.removed_count, counters.removed_mass += c.snapshot.removed_mass,
+            counters.removed_energy += c.snapshot.removed_energy, counters.inserted_count += c.snapshot.inserted_count,
+            counters.inserted_mass += c.snapshot.inserted_mass, counters.inserted_energy += c.snapshot.inserted_energy,
+            counters.inserted_kinetic += c.snapshot.inserted_kinetic;
+      next_id_ = std::max(next_id_, c.snapshot.next_id);
       append_records(all, ParticleRecords<Real>{c.snapshot.store, c.snapshot.contacts});
     }
     Real r_max = params.max_radius;
@@ -100,7 +113,10 @@ class DistributedSimulation {
     append_records(mine, select_records(all.store, all.contacts, std::vector<Index>(local.begin() + static_cast<std::ptrdiff_t>(owned), local.end()), false));
     SimulationSnapshot<Real> snap = counters;
     snap.store = mine.store, snap.contacts = mine.contacts;
-    if (comm_.rank() == 0) removed_ += counters.removed_count;
+    if (comm_.rank() == 0)
+      removed_ += counters.removed_count, removed_mass_ += counters.removed_mass, removed_energy_ += counters.removed_energy,
+          inserted_count_ += counters.inserted_count, inserted_mass_ += counters.inserted_mass,
+          inserted_energy_ += counters.inserted_energy, inserted_kinetic_ += counters.inserted_kinetic;
     SimulationParams<Real> p = params_;
     p.max_radius = r_max, p.canonical_order = true;
     sim_ = std::make_unique<Sim>(p, laws, world, snap, shape);
@@ -111,7 +127,7 @@ class DistributedSimulation {
   // Collective: each rank writes its particles (owned, with their contact states) and counters to
   // `path`.part<rank>of<ranks> (io/checkpoint.hpp: atomically, checksummed); returns when all have,
   // or throws on every rank when any could not (naming the first rank's error).
-  void write_checkpoint(const std::string& path, const std::string& text = "") {
+  void write_checkpoint(const std::string& path, const std::string& text = "", const std::string& feeders = "") {
     const StoreSnapshot<Real> store = sim_->store_snapshot();
     const ContactSnapshot<Real> contacts = sim_->contact_snapshot();
     std::vector<Index> mine;
@@ -120,10 +136,13 @@ class DistributedSimulation {
     const ParticleRecords<Real> r = select_records(store, contacts, mine);
     SimulationSnapshot<Real> s;
     s.store = r.store, s.contacts = r.contacts, s.steps = steps(), s.removed_count = removed_;
+    s.removed_mass = removed_mass_, s.removed_energy = removed_energy_, s.next_id = next_id_;
+    s.inserted_count = inserted_count_, s.inserted_mass = inserted_mass_, s.inserted_energy = inserted_energy_,
+    s.inserted_kinetic = inserted_kinetic_;
     s.initial_count = static_cast<Index>(r.size());
     std::string error;
     try {
-      blaze::write_checkpoint(part_path(path, comm_.rank(), comm_.size()), s, text);
+      blaze::write_checkpoint(part_path(path, comm_.rank(), comm_.size()), s, text, feeders);
     } catch (const std::exception& e) {
       error = e.what();
     }
@@ -161,6 +180,116 @@ class DistributedSimulation {
   Index removed_count() const { return static_cast<Index>(comm_.sum(static_cast<long>(removed_))); }
   std::uint64_t rebuilds() const { return rebuilds_; }
   std::uint64_t rebalances() const { return rebalances_; }
+  // A restarted run's text and feeders' state, as part 0 holds them (empty for a new run).
+  const std::string& restart_text() const { return text_; }
+  const std::string& restart_feeders() const { return feeders_; }
+
+  // ---- what a run's output reads: collective, the same numbers on every rank ----
+  double time() const { return sim_->time(); }
+  Index size() const { return static_cast<Index>(total()); }
+  Real max_radius() const { return sim_->max_radius(); }
+  double removed_mass() const { return sum_in_rank_order({removed_mass_})[0]; }
+  double removed_energy() const { return sum_in_rank_order({removed_energy_})[0]; }
+  Index inserted_count() const { return static_cast<Index>(comm_.sum(static_cast<long>(inserted_count_))); }
+  double inserted_mass() const { return sum_in_rank_order({inserted_mass_})[0]; }
+  double inserted_energy() const { return sum_in_rank_order({inserted_energy_})[0]; }
+  double inserted_kinetic() const { return sum_in_rank_order({inserted_kinetic_})[0]; }
+  bool keeps_energy_ledger() const { return sim_->keeps_energy_ledger(); }
+  using Sample = typename Sim::Sample;
+  using WorldLoad = typename Sim::WorldLoad;
+  // Simulation::sample over all ranks: sums, and the deepest penetration (the lowest id on a tie).
+  Sample sample(double penetration_limit) {
+    Sample s = sim_->sample(penetration_limit);
+    std::vector<double> v = {s.energies.translational, s.energies.rotational, s.energies.potential, s.mass, s.stored.pairs,
+                             s.stored.walls, static_cast<double>(s.stored.wall_contacts), static_cast<double>(s.vertex_face_sides),
+                             static_cast<double>(s.edge_edge_sides), static_cast<double>(s.penetration.over), s.drive_work,
+                             s.dissipated_pair, s.thesis_estimate};
+    for (double d : s.dissipated_walls) v.push_back(d);
+    v = sum_in_rank_order(v);
+    s.energies = {v[0], v[1], v[2]};
+    s.mass = v[3];
+    s.stored = {v[4], v[5], std::lround(v[6])};
+    s.vertex_face_sides = std::lround(v[7]), s.edge_edge_sides = std::lround(v[8]);
+    s.vertex_face = s.vertex_face_sides / 2, s.edge_edge = s.edge_edge_sides / 2;
+    s.penetration.over = std::lround(v[9]);
+    s.drive_work = v[10], s.dissipated_pair = v[11], s.thesis_estimate = v[12];
+    for (int c = 0; c < kContactClasses; ++c) s.dissipated_walls[c] = v[13 + static_cast<std::size_t>(c)];
+    const std::vector<std::pair<double, long>> worst = comm_.all_gather(std::pair<double, long>{s.penetration.worst, static_cast<long>(s.penetration.worst_id)});
+    for (const auto& [d, id] : worst)
+      if (d > s.penetration.worst || (d == s.penetration.worst && id >= 0 && (s.penetration.worst_id < 0 || id < s.penetration.worst_id)))
+        s.penetration.worst = d, s.penetration.worst_id = static_cast<Index>(id);
+    return s;
+  }
+  // Simulation::world_loads over all ranks.
+  std::vector<WorldLoad> world_loads(const std::vector<int>& objects) {
+    const std::vector<WorldLoad> mine = sim_->world_loads(objects);
+    std::vector<double> v;
+    for (const auto& l : mine) v.insert(v.end(), {l.force.x, l.force.y, l.force.z, l.torque.x, l.torque.y, l.torque.z});
+    v = sum_in_rank_order(v);
+    std::vector<WorldLoad> out(mine.size());
+    for (std::size_t k = 0; k < out.size(); ++k)
+      out[k] = {{v[6 * k], v[6 * k + 1], v[6 * k + 2]}, {v[6 * k + 3], v[6 * k + 4], v[6 * k + 5]}};
+    return out;
+  }
+
+  // ---- feeders (pipeline/feeder.hpp), run alike on every rank ----
+  std::uint64_t feeder_steps() const { return steps(); }
+  // The centres and bounding radii in [lo, hi] on every rank (owned and ghosts: a particle may come
+  // twice, which changes no overlap test), gathered in rank order: the same on every rank.
+  void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre, std::vector<double>& radius) {
+    std::vector<Vec3<double>> c;
+    std::vector<double> r;
+    sim_->particles_in_box(lo, hi, c, r);
+    std::string mine;
+    put_array(mine, c);
+    put_array(mine, r);
+    centre.clear(), radius.clear();
+    const std::vector<std::string> all = comm_.all_gather_bytes(mine);
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      ByteReader<CommunicatorError> in(all[k], "particles in the box from rank " + std::to_string(k) + ": ");
+      const std::vector<Vec3<double>> ck = in.template array<Vec3<double>>();
+      const std::vector<double> rk = in.template array<double>();
+      centre.insert(centre.end(), ck.begin(), ck.end()), radius.insert(radius.end(), rk.begin(), rk.end());
+    }
+  }
+  // A batch every rank holds alike: ids as one process gives them (in batch order from the next
+  // id), each rank inserts the particles its box holds, then a collective rebuild sends ghosts.
+  void insert(ParticleState<Real> add) {
+    ParticleState<Real> mine;
+    std::vector<Index> which;
+    for (std::size_t k = 0; k < add.size(); ++k) {
+      add.id[k] = next_id_++;
+      if (decomposition_.owner(vec_cast<double>(add.position[k])) == comm_.rank()) which.push_back(static_cast<Index>(k));
+    }
+    mine = select_state(add, which);
+    const double before_mass = sim_->inserted_mass(), before_energy = sim_->inserted_energy(), before_kinetic = sim_->inserted_kinetic();
+    if (!mine.id.empty()) sim_->insert(mine, true);
+    inserted_count_ += static_cast<Index>(mine.size());
+    inserted_mass_ += sim_->inserted_mass() - before_mass;
+    inserted_energy_ += sim_->inserted_energy() - before_energy;
+    inserted_kinetic_ += sim_->inserted_kinetic() - before_kinetic;
+    owned_ids_.insert(owned_ids_.end(), mine.id.begin(), mine.id.end());
+    std::sort(owned_ids_.begin(), owned_ids_.end());
+    rebuild();
+  }
+
+  // Every rank's particles (owned) in permanent-id order on rank 0 (`root`), none on the others:
+  // frames and the last good state written by one rank.
+  ParticleState<Real> gathered_state(int root = 0) const {
+    std::string mine;
+    pack_state(mine, owned_state());
+    const std::vector<std::string> all = comm_.all_gather_bytes(mine);
+    ParticleState<Real> out;
+    if (comm_.rank() != root) return out;
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      ByteReader<CommunicatorError> in(all[k], "state from rank " + std::to_string(k) + ": ");
+      unpack_state(in, out);
+    }
+    std::vector<Index> order(out.size());
+    std::iota(order.begin(), order.end(), Index{0});
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return out.id[static_cast<std::size_t>(a)] < out.id[static_cast<std::size_t>(b)]; });
+    return select_state(out, order);
+  }
 
   void step() {
     sim_->begin_step();
@@ -196,6 +325,46 @@ class DistributedSimulation {
     for (int a = 0; a < 3; ++a)
       if (!((params_.periodic >> a) & 1u) && !(xa[a] >= la[a] && xa[a] < ha[a])) return false;
     return true;
+  }
+  // v summed over the ranks in rank order (the same on every rank).
+  std::vector<double> sum_in_rank_order(const std::vector<double>& v) const {
+    std::string mine;
+    put_array(mine, v);
+    std::vector<double> out(v.size(), 0.0);
+    const std::vector<std::string> all = comm_.all_gather_bytes(mine);
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      ByteReader<CommunicatorError> in(all[k], "sums from rank " + std::to_string(k) + ": ");
+      const std::vector<double> vk = in.template array<double>();
+      if (vk.size() != out.size()) throw CommunicatorError("sums: rank " + std::to_string(k) + " sent " + std::to_string(vk.size()) + " values, not " + std::to_string(out.size()));
+      for (std::size_t j = 0; j < out.size(); ++j) out[j] += vk[j];
+    }
+    return out;
+  }
+  // A particle leaving the domain at a rebuild, counted by its owner with its mass and its
+  // translational kinetic plus potential energy (as Simulation counts its removals).
+  void count_removed(const StoreSnapshot<Real>& store, std::size_t k) {
+    ++removed_;
+    const double m = 1.0 / static_cast<double>(store.reals.at(StoreSnapshot<Real>::kInverseMassField)[k]);
+    Vec3<double> v;
+    v.x = static_cast<double>(store.reals.at(StoreSnapshot<Real>::kVelocityField)[k]);
+    v.y = static_cast<double>(store.reals.at(StoreSnapshot<Real>::kVelocityField + 1)[k]);
+    v.z = static_cast<double>(store.reals.at(StoreSnapshot<Real>::kVelocityField + 2)[k]);
+    removed_mass_ += m;
+    removed_energy_ += 0.5 * m * dot(v, v) - m * dot(vec_cast<double>(params_.gravity), record_position(store, k));
+  }
+  static void pack_state(std::string& out, const ParticleState<Real>& s) {
+    put_array(out, s.position), put_array(out, s.velocity), put_array(out, s.angular_velocity), put_array(out, s.orientation);
+    put_array(out, s.radius), put_array(out, s.mass), put_array(out, s.inertia), put_array(out, s.material), put_array(out, s.type);
+    put_array(out, s.id);
+  }
+  static void unpack_state(ByteReader<CommunicatorError>& in, ParticleState<Real>& s) {
+    const auto add = [&](auto& field) {
+      using T = typename std::decay_t<decltype(field)>::value_type;
+      const std::vector<T> v = in.template array<T>();
+      field.insert(field.end(), v.begin(), v.end());
+    };
+    add(s.position), add(s.velocity), add(s.angular_velocity), add(s.orientation), add(s.radius), add(s.mass), add(s.inertia);
+    add(s.material), add(s.type), add(s.id);
   }
   static ParticleState<Real> select_state(const ParticleState<Real>& s, const std::vector<Index>& which) {
     ParticleState<Real> out;
@@ -238,6 +407,9 @@ class DistributedSimulation {
   // order, and its ghosts from rank r are those in the same order.
   void plan_exchange(const std::vector<Index>& ids_in_order, std::size_t owned) {
     const std::vector<Index> now = sim_->ids();  // the store's order after its sort
+    std::vector<std::uint8_t> counted(now.size());
+    for (std::size_t k = 0; k < now.size(); ++k) counted[k] = std::binary_search(owned_ids_.begin(), owned_ids_.end(), now[k]) ? 1 : 0;
+    sim_->count_only(counted);
     std::map<Index, Index> at;
     for (std::size_t k = 0; k < now.size(); ++k) at[now[k]] = static_cast<Index>(k);
     send_.assign(static_cast<std::size_t>(comm_.size()), {});
@@ -277,7 +449,7 @@ class DistributedSimulation {
     for (std::size_t k = 0; k < store.id.size(); ++k) {
       if (!std::binary_search(owned_ids_.begin(), owned_ids_.end(), store.id[k])) continue;
       if (inside_domain(record_position(store, k))) keep.push_back(static_cast<Index>(k));
-      else ++removed_;
+      else count_removed(store, k);
     }
     const ParticleRecords<Real> owned = select_records(store, contacts, keep);
     const std::vector<long> counts = comm_.all_gather(static_cast<long>(owned.size()));
@@ -306,7 +478,9 @@ class DistributedSimulation {
   std::unique_ptr<Sim> sim_;
   std::vector<Index> owned_ids_;                      // sorted
   std::vector<std::vector<Index>> send_, recv_;       // per rank: store indices
-  Index removed_ = 0;
+  Index removed_ = 0, next_id_ = 0, inserted_count_ = 0;
+  double removed_mass_ = 0, removed_energy_ = 0, inserted_mass_ = 0, inserted_energy_ = 0, inserted_kinetic_ = 0;
+  std::string text_, feeders_;  // a restart's (part 0)
   std::uint64_t rebuilds_ = 0, rebalances_ = 0;
 };
 
