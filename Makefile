@@ -104,8 +104,11 @@ MPI_RANKS ?= 1 2 3 4
 $(BUILD)/mpi/%.o: %.cpp $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(MPICXX) $(CXXFLAGS) -DBLAZE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 -c $< -o $@
-$(BUILD)/mpi/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi/%.o)
+$(BUILD)/mpi/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi/%.o) $(HOST_OBJ)
 	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@ -lboost_unit_test_framework
+# blaze run over ranks (mpirun -np N build/mpi/blaze run SCENE.toml; apps/blaze/run_scene.hpp).
+$(BUILD)/mpi/blaze: $(BLAZE_SRC:%.cpp=$(BUILD)/mpi/%.o) $(HOST_OBJ)
+	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@
 # The same suite on the CUDA backend (ranks sharing the GPUs; the GPU machine's header-only
 # Boost.Test): MPI's flags from mpicxx, or MPI_DIR=<prefix with include/ and lib/>.
 MPI_DIR ?=
@@ -114,7 +117,7 @@ MPI_LIB ?= $(filter -L% -l%,$(shell $(MPICXX) --showme:link 2>/dev/null)) $(if $
 $(BUILD)/mpi-cuda/%.o: %.cpp $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(NVCC) $(NVCCFLAGS) -x cu -DBLAZE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 $(MPI_INC) -c $< -o $@
-$(BUILD)/mpi-cuda/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi-cuda/%.o)
+$(BUILD)/mpi-cuda/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi-cuda/%.o) $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp,-pthread $^ -o $@ $(MPI_LIB)
 $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 	$(CXX) $(LDFLAGS_cpu) $^ -o $@

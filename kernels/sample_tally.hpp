@@ -5,8 +5,9 @@
 //   pair_energy, wall_energy, wall_contacts  StoredContactEnergy's slots (contact_energy.hpp),
 //                                         when that kernel ran just before                  [J]
 //   vertex_face, edge_edge                the last force evaluation's counts (statistics)
-//   worst, worst_index, over              deepest overlap / radius since the last reset, its
-//                                         particle (the lowest index on a tie), and the count
+//   worst, worst_id, over                 deepest overlap / radius since the last reset, its
+//                                         particle's permanent id (the lowest on a tie: the
+//                                         same whatever the memory order), and the count
 //                                         above `threshold` (Features::monitor)
 //   ledger                                the particle's energy accounts since the last reset
 //                                         (drive work, dissipation by contact class;
@@ -29,7 +30,7 @@ struct SampleTally {
   double thesis_estimate = 0;                                          // J (EnergyLedger::thesis_estimate)
   long long wall_contacts = 0, vertex_face = 0, edge_edge = 0, over = 0;
   double worst = 0;        // overlap / radius
-  Index worst_index = -1;  // memory index of the deepest (-1: none above 0)
+  Index worst_id = -1;  // permanent id of the deepest (-1: none above 0)
 
   BLAZE_HD void combine(const SampleTally& o) {
     translational += o.translational, rotational += o.rotational, potential += o.potential, mass += o.mass;
@@ -37,8 +38,8 @@ struct SampleTally {
     for (int c = 0; c < kLedgerColumns; ++c) ledger[c] += o.ledger[c];
     thesis_estimate += o.thesis_estimate;
     wall_contacts += o.wall_contacts, vertex_face += o.vertex_face, edge_edge += o.edge_edge, over += o.over;
-    if (o.worst > worst || (o.worst == worst && o.worst_index >= 0 && (worst_index < 0 || o.worst_index < worst_index)))
-      worst = o.worst, worst_index = o.worst_index;
+    if (o.worst > worst || (o.worst == worst && o.worst_id >= 0 && (worst_id < 0 || o.worst_id < worst_id)))
+      worst = o.worst, worst_id = o.worst_id;
   }
 };
 
@@ -73,7 +74,7 @@ struct ParticleTally {
     if (p.penetration) {
       const double d = static_cast<double>(p.penetration[i]);
       t.over = d > threshold;
-      if (d > 0) t.worst = d, t.worst_index = i;
+      if (d > 0) t.worst = d, t.worst_id = p.id[i];
     }
     return t;
   }

@@ -729,7 +729,7 @@ class Simulation {
   PenetrationReport penetration(const SampleTally& t) {
     PenetrationReport r;
     r.worst = t.worst, r.over = static_cast<long>(t.over);
-    if (t.worst_index >= 0) r.worst_id = read_one(store_.view().id + t.worst_index, Space{});
+    r.worst_id = t.worst_id;
     return r;
   }
 

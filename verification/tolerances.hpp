@@ -531,6 +531,10 @@ constexpr double decomposition_sampled_imbalance = 0.15;
 // order they agreed to 2.8e-15 to 2.7e-10 r for the spheres over 1 000 steps, and the cubes parted
 // by 1e-3 r by step 800.)
 constexpr double distributed_positions = 0;
+// `blaze run`'s time series over ranks against one rank's (test_blaze_run.cpp), each column's
+// difference over its largest value: the states are bitwise the same, the ranks' partial sums
+// are added in another order (rounding, ~1e-16 per term of a sum over ~600 particles); 1e-12.
+constexpr double distributed_series = 1e-12;
 // A surface speed bound against its closed form (omega times a distance, a few operations in
 // double): rounding only, ~1e-16 relative.
 constexpr double surface_speed_closed_form = 1e-12;

@@ -5,6 +5,8 @@
 // the precision (float, double), the law (linear, hertz) and, through its particle types, the
 // shape policy (spheres, or polyhedra with spheres); each combination is one instantiation of the
 // same Simulation template, compiled in the law families' units apps/blaze/run_*.cpp (run_scene.hpp).
+// An MPI build (build/mpi/blaze, BLAZE_MPI) run under mpirun -np N runs the scene over N ranks
+// (issue 21; run_scene.hpp): rank 0 prints and writes the time series; errors come from any rank.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -16,6 +18,7 @@
 #include "blaze/scene/critical_step.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "pipeline/parallel/communicator.hpp"
 
 using namespace blaze;
 using blaze::app::Options;
@@ -95,10 +98,40 @@ int run_precision(const Scene& s, const Options& o) {
   return app::run_rolling<Real>(s, o);
 }
 
+// Over ranks an error names its rank, and stops every rank (the others may wait in a collective).
+std::string rank_label() {
+#if defined(BLAZE_MPI)
+  int on = 0, size = 1, rank = 0;
+  MPI_Initialized(&on);
+  if (on) MPI_Comm_size(MPI_COMM_WORLD, &size), MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (size > 1) return "rank " + std::to_string(rank) + ": ";
+#endif
+  return "";
+}
+int stop_ranks(int code) {
+#if defined(BLAZE_MPI)
+  int on = 0, size = 1;
+  MPI_Initialized(&on);
+  if (on) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1) {
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, code);
+  }
+#endif
+  return code;
+}
+
 }  // namespace
 int main(int argc, char** argv) try {
   blaze::line_buffered_output();
-  const Options o = parse_args(argc, argv);
+  Options o = parse_args(argc, argv);
+#if defined(BLAZE_MPI)
+  static MpiSession mpi(&argc, &argv);  // before anything else can fail: MPI_Finalize at exit
+  static const Communicator comm;
+  o.comm = &comm;
+  if (comm.rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;  // one voice; errors still on stderr
+  if (comm.size() > 1) std::printf("blaze: over %d ranks (MPI)\n", comm.size());
+#endif
   const Scene s = load_scene(o.scene, o.overrides);
   const bool gpu_build = std::string(DefaultSpace::name) == "gpu";
   if (s.backend == BackendKind::gpu && !gpu_build)
@@ -139,9 +172,9 @@ int main(int argc, char** argv) try {
   }
   return s.precision == PrecisionKind::float32 ? run_precision<float>(s, o) : run_precision<double>(s, o);
 } catch (const SceneError& e) {
-  std::fprintf(stderr, "blaze: scene rejected: %s\n", e.what());
-  return 1;
+  std::fprintf(stderr, "blaze: %sscene rejected: %s\n", rank_label().c_str(), e.what());
+  return stop_ranks(1);
 } catch (const std::exception& e) {
-  std::fprintf(stderr, "blaze: error: %s\n", e.what());
-  return 1;
+  std::fprintf(stderr, "blaze: %serror: %s\n", rank_label().c_str(), e.what());
+  return stop_ranks(1);
 }

@@ -4,12 +4,17 @@
 #include <vector>
 #include "blaze/scene/scene.hpp"
 
+namespace blaze {
+class Communicator;  // pipeline/parallel/communicator.hpp
+}
+
 namespace blaze::app {
 
 struct Options {
   std::string scene, restart;
   std::vector<std::string> overrides;
   bool quiet = false, check = false, phases = false;
+  const Communicator* comm = nullptr;  // the ranks of an MPI build under mpirun (null: one process)
 };
 
 

@@ -2,6 +2,11 @@
 // shape (run_scene), and the law families by which the program is split into translation units
 // (run_history_free, run_spring, run_rolling: apps/blaze/run_*.cpp instantiate them, so that a
 // parallel build compiles them side by side; one unit holding them all took ~10 minutes of nvcc).
+// Over several ranks (an MPI build, build/mpi/blaze under mpirun; issue 21) the same loop drives a
+// DistributedSimulation: rank 0 writes the time series, the .pvd and the world; every rank writes
+// its own particles as a piece of each frame (vtu/particles_NNNN_rK.vtu) and rank 0 the frame's
+// .pvtu naming the pieces; checkpoints are one part a rank (checkpoint.blz.part<k>of<n>), read back
+// by any number of ranks.
 #pragma once
 #include <unistd.h>
 
@@ -30,6 +35,9 @@
 #include "pipeline/simulation.hpp"
 #include "blaze/io/console.hpp"
 #include "apps/blaze/run_families.hpp"
+#if defined(BLAZE_MPI)
+#include "pipeline/parallel/distributed_simulation.hpp"
+#endif
 
 namespace blaze::app {
 
@@ -94,56 +102,67 @@ void restore_feeders(std::vector<Feeder<Real>>& feeders, const std::string& byte
   }
 }
 
-template <class Real, class Law, class Shape>
-int run_scene(const Scene& s, const Options& o) {
-  constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
-  Shape shape;
-  ParticleState<Real> particles;
-  std::vector<ConvexShape> shapes;
-  if constexpr (polyhedra) {
-    shapes = build_shapes(s);
-    shape.table = build_shape_table<Real>(s, shapes);
-    particles = build_particles<Real>(s, &shape.table);
-  } else {
-    particles = build_particles<Real>(s, nullptr);
-  }
-  // Unless the scene says: polyhedra evaluate each pair once (their pairs are dear: 1.8x on the
-  // CPU), spheres from both sides (a sphere pair costs less than its slot's memory traffic).
-  const bool once = s.pair_evaluation == PairsKind::automatic ? std::string(Shape::name) != "sphere"
-                                                              : s.pair_evaluation == PairsKind::once;
-  const SimulationParams<Real> prm = simulation_params<Real>(s, once);
-  const World<Real> world = build_world<Real>(s);
-  using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
-  // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,
-  // and every physical input of the scene must be as it was (scene_identity.hpp).
-  const SceneIdentity scene_id = scene_identity(s);
-  const std::string identity = identity_text(scene_id);
-  Checkpoint<Real> restart;
-  std::string restart_log;  // the run's own bookkeeping saved after the identity
-  if (!o.restart.empty()) {
-    restart = read_checkpoint<Real>(o.restart);
-    const std::string why = identity_difference(restart.text, scene_id, s, restart_log);
-    if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
-  }
-  Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
-                              : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
+// What the loop needs to know of what it drives (a Simulation, or over ranks a
+// DistributedSimulation of one): the local simulation's type, whether its particles are polyhedra.
+template <class Run>
+struct RunTraits;
+template <class Space, class Shape, class Law, class Integrator, class Kinematics, class Features>
+struct RunTraits<Simulation<Space, Shape, Law, Integrator, Kinematics, Features>> {
+  using Local = Simulation<Space, Shape, Law, Integrator, Kinematics, Features>;
+  static constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
+};
+// A frame's particles and (periodic axes) their unwrapped positions: all of them, or over ranks
+// the rank's own (its piece).
+template <class Sim>
+ParticleState<typename Sim::Real> frame_state(Sim& sim, std::vector<Vec3<double>>& unwrapped) {
+  ParticleState<typename Sim::Real> st = sim.state();
+  unwrapped = sim.unwrapped_positions(st);
+  return st;
+}
+#if defined(BLAZE_MPI)
+template <class Sim>
+struct RunTraits<DistributedSimulation<Sim>> {
+  using Local = Sim;
+  static constexpr bool polyhedra = RunTraits<Sim>::polyhedra;
+};
+template <class Sim>
+ParticleState<typename Sim::Real> frame_state(DistributedSimulation<Sim>& sim, std::vector<Vec3<double>>& unwrapped) {
+  return sim.piece(unwrapped);
+}
+#endif
+template <class Real, class Shape>
+const PolyhedronTable<Real>* table_of(const Shape& shape) {
+  if constexpr (std::is_same_v<Shape, SphereShape>) return nullptr;
+  else return &shape.table;
+}
+
+// The run's loop (the output, the feeders, the guards) over a Simulation or, over ranks, a
+// DistributedSimulation (then every call on `sim` that the loop makes is collective).
+template <class Real, class Run>
+int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, const std::vector<ConvexShape>& shapes,
+          const std::string& identity, const std::string& restart_log, const std::string& feeder_bytes,
+          const PolyhedronTable<Real>* table) {
+  constexpr bool kRanks = !std::is_same_v<Run, typename RunTraits<Run>::Local>;
+  constexpr bool polyhedra = RunTraits<Run>::polyhedra;
+  int rank = 0, pieces = 1;
+  if constexpr (kRanks) rank = sim.communicator().rank(), pieces = sim.communicator().size();
+  const bool root = rank == 0;
   // The [[feed]]s (pipeline/feeder.hpp), their state restored with the run's.
   std::vector<Feeder<Real>> feeders;
-  const PolyhedronTable<Real>* table = nullptr;
-  if constexpr (polyhedra) table = &shape.table;
   for (std::size_t k = 0; k < s.feeds.size(); ++k) feeders.emplace_back(s, k, table);
-  if (!o.restart.empty()) restore_feeders(feeders, restart.feeders, o.restart);
+  if (!o.restart.empty()) restore_feeders(feeders, feeder_bytes, o.restart);
 
   const std::string& dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
   const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
-  RunLog<Real> log(dir + "/timeseries.csv", s.output.penetration_warning, s.output.energy_gain_limit, prm.gravity, height,
-                   resume_at, sim.keeps_energy_ledger(), reported_loads(s), !feeders.empty());
+  // Over ranks every rank samples (the samples are collective) and rank 0 writes.
+  RunLog<Real> log(root ? dir + "/timeseries.csv" : std::string("/dev/null"), s.output.penetration_warning, s.output.energy_gain_limit,
+                   vec_cast<Real>(s.gravity), height, resume_at, sim.keeps_energy_ledger(), reported_loads(s), !feeders.empty());
   // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
   // it is downloaded only if a guard stops the run.
   sim.keep_state();
-  if (!world.empty()) write_world_vtu(dir + "/walls.vtu", world);
+  if (!world.empty() && root) write_world_vtu(dir + "/walls.vtu", world);
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
   // A world that moves gets a walls frame with every particles frame (walls.vtu: where it started).
   std::unique_ptr<PvdCollection> pvd_walls = sim.world_moves() ? std::make_unique<PvdCollection>(dir + "/walls.pvd") : nullptr;
@@ -153,7 +172,8 @@ int run_scene(const Scene& s, const Options& o) {
   BackgroundWriter frames;  // VTU frames written while the steps go on (after pvd: it goes first)
   if (!o.restart.empty()) {
     log.resume(restart_log);
-    frame = static_cast<int>(pvd.resume(resume_at));
+    frame = static_cast<int>(root ? pvd.resume(resume_at) : 0);
+    if constexpr (kRanks) frame = static_cast<int>(sim.communicator().max(static_cast<long>(frame)));
     pvd_faces.resume(resume_at);
     if (pvd_walls) pvd_walls->resume(resume_at);
     std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
@@ -167,6 +187,7 @@ int run_scene(const Scene& s, const Options& o) {
   Progress progress(!o.quiet, s.end_time);
   double particle_steps = 0;
   const std::uint64_t first = sim.steps();
+  Index sim_size = sim.size();
   const std::uint64_t builds_before = sim.neighbour_builds();
   sim.timer().enabled = o.phases;
   double output_seconds = 0;  // samples, frame downloads and checkpoints (the GPU idle meanwhile)
@@ -180,8 +201,8 @@ int run_scene(const Scene& s, const Options& o) {
     } catch (const std::exception& w) {  // the guard's report and last_good.vtu come first
       std::fprintf(stderr, "blaze: a frame could not be written: %s\n", w.what());
     }
-    const ParticleState<Real> last_good = sim.kept_state();
-    write_particles_vtu(dir + "/last_good.vtu", last_good);
+    const ParticleState<Real> last_good = sim.kept_state();  // over ranks: all of it on rank 0
+    if (root) write_particles_vtu(dir + "/last_good.vtu", last_good);
     std::fprintf(stderr, "blaze: run stopped: %s\nthe last good state (%zu particles) is in %s/last_good.vtu; "
                  "lower dt or check the contact parameters\n", e.what(), last_good.size(), dir.c_str());
     return 3;
@@ -192,7 +213,7 @@ int run_scene(const Scene& s, const Options& o) {
     std::uint64_t next = blaze::next_event(k, steps, {csv_every, vtu_every, checkpoint_every});
     for (const auto& f : feeders) next = std::min(next, f.next_insertion(k + 1));
     // and the progress line now and then: about 1e7 particle-steps apart (~3 s on 2 CPU cores)
-    const std::uint64_t chunk = std::clamp<std::uint64_t>(10000000 / std::max<std::uint64_t>(1, sim.size()), 1, 10000);
+    const std::uint64_t chunk = std::clamp<std::uint64_t>(10000000 / std::max<std::uint64_t>(1, static_cast<std::uint64_t>(sim_size)), 1, 10000);
     return std::min(next, k + chunk);
   };
   for (std::uint64_t k = first;;) try {
@@ -200,30 +221,46 @@ int run_scene(const Scene& s, const Options& o) {
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
     const auto output_start = std::chrono::steady_clock::now();
-    if (checkpoint_every && k > first && k % checkpoint_every == 0)
-      write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save(), save_feeders(feeders));
+    if (checkpoint_every && k > first && k % checkpoint_every == 0) {
+      if constexpr (kRanks) sim.write_checkpoint(dir + "/checkpoint.blz", identity + log.save(), save_feeders(feeders));
+      else write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save(), save_feeders(feeders));
+    }
     if (write_csv || write_vtu) {
       if (write_csv) log.sample(sim);  // the guards: a state that trips one is not a good one
       sim.keep_state();
     }
     if (write_vtu) {  // in the background; the .pvd names a frame once it is written
-      const auto st = std::make_shared<const ParticleState<Real>>(sim.state());
-      const auto unwrapped = std::make_shared<const std::vector<Vec3<double>>>(sim.unwrapped_positions(*st));
-      const auto walls = pvd_walls ? std::make_shared<const World<Real>>(placed(world, sim.world_poses())) : nullptr;
+      auto unwrapped = std::make_shared<std::vector<Vec3<double>>>();
+      const auto st = std::make_shared<const ParticleState<Real>>(frame_state(sim, *unwrapped));
+      const auto walls = pvd_walls && root ? std::make_shared<const World<Real>>(placed(world, sim.world_poses())) : nullptr;
       frames.start([&, st, unwrapped, walls, f = frame++, t = sim.time()] {
         char name[64];
-        std::snprintf(name, sizeof name, "vtu/particles_%04d.vtu", f);
-        write_particles_vtu(dir + "/" + name, *st, *unwrapped);
-        pvd.add(t, name);
+        std::snprintf(name, sizeof name, "vtu/particles_%04d", f);
+        const std::string piece = pieces > 1 ? std::string(name) + "_r" + std::to_string(rank) + ".vtu" : std::string(name) + ".vtu";
+        const VtuFile file = particles_vtu(*st, *unwrapped);
+        file.write(dir + "/" + piece);
+        if (pieces > 1 && root) {  // the frame's pieces, by name: rank k writes its own
+          std::vector<std::string> names;
+          for (int r = 0; r < pieces; ++r) names.push_back(std::string(name + 4) + "_r" + std::to_string(r) + ".vtu");
+          file.write_parallel(dir + "/" + name + ".pvtu", names);
+        }
+        if (root) pvd.add(t, std::string(name) + (pieces > 1 ? ".pvtu" : ".vtu"));
         if (walls) {
           std::snprintf(name, sizeof name, "vtu/walls_%04d.vtu", f);
           write_world_vtu(dir + "/" + name, *walls);
           pvd_walls->add(t, name);
         }
         if constexpr (polyhedra) {
-          std::snprintf(name, sizeof name, "vtu/polyhedra_%04d.vtu", f);
-          write_polyhedra_vtu(dir + "/" + name, *st, shapes);
-          pvd_faces.add(t, name);
+          std::snprintf(name, sizeof name, "vtu/polyhedra_%04d", f);
+          const std::string faces = pieces > 1 ? std::string(name) + "_r" + std::to_string(rank) + ".vtu" : std::string(name) + ".vtu";
+          const VtuFile poly = polyhedra_vtu(*st, shapes);
+          poly.write(dir + "/" + faces);
+          if (pieces > 1 && root) {
+            std::vector<std::string> names;
+            for (int r = 0; r < pieces; ++r) names.push_back(std::string(name + 4) + "_r" + std::to_string(r) + ".vtu");
+            poly.write_parallel(dir + "/" + name + ".pvtu", names);
+          }
+          if (root) pvd_faces.add(t, std::string(name) + (pieces > 1 ? ".pvtu" : ".vtu"));
         }
       });
     }
@@ -238,9 +275,10 @@ int run_scene(const Scene& s, const Options& o) {
           std::printf("note: t = %.6g s: %s: %ld particles could not be placed (the region is full); they stay due%s\n", sim.time(),
                       f.spec().name.c_str(), f.shortfall(), feed_notes == kMaxFeedNotes ? " [further such notes omitted]" : "");
       }
+    sim_size = sim.size();  // over ranks a collective count: once a stretch
     const std::uint64_t next = next_event(k);
     sim.run(next - k);
-    particle_steps += static_cast<double>(sim.size()) * static_cast<double>(next - k);
+    particle_steps += static_cast<double>(sim_size) * static_cast<double>(next - k);
     k = next;
     progress.update(sim.time(), particle_steps);
   } catch (const NonFiniteState& e) {
@@ -252,8 +290,9 @@ int run_scene(const Scene& s, const Options& o) {
   frames.wait();  // the last frame on disk before the run reports
   output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - drain_start).count();
   progress.update(sim.time(), particle_steps, true);
+  const Index left = sim.size(), removed = sim.removed_count();  // collective over ranks
   std::printf("done: %llu steps, %u particles left, %u removed (left the domain)", static_cast<unsigned long long>(steps),
-              static_cast<unsigned>(sim.size()), static_cast<unsigned>(sim.removed_count()));
+              static_cast<unsigned>(left), static_cast<unsigned>(removed));
   if (csv_every)  // the guards' figures come from the samples
     std::printf("; deepest penetration %.3g%% of the radius, over %.3g%% in %ld samples; largest energy gain %.3g of "
                 "the scale", 100 * log.worst_penetration(), 100 * s.output.penetration_warning, log.samples_over_limit(),
@@ -294,11 +333,67 @@ int run_scene(const Scene& s, const Options& o) {
       std::printf(" %s %.4g", phase.c_str(), 1e3 * seconds / static_cast<double>(taken));
     std::printf("\n");
   }
-  std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames)%s\n", dir.c_str(), dir.c_str(), frame,
+  std::printf("wrote %s/timeseries.csv, %s/particles.pvd (%d frames%s)%s\n", dir.c_str(), dir.c_str(), frame,
+              pieces > 1 ? (", a piece a rank on " + std::to_string(pieces) + " ranks").c_str() : "",
               pvd_walls ? " and walls.pvd (the moving world)" : "");
   return 0;
 }
 
+
+template <class Real, class Law, class Shape>
+int run_scene(const Scene& s, const Options& o) {
+  constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
+  Shape shape;
+  ParticleState<Real> particles;
+  std::vector<ConvexShape> shapes;
+  if constexpr (polyhedra) {
+    shapes = build_shapes(s);
+    shape.table = build_shape_table<Real>(s, shapes);
+    particles = build_particles<Real>(s, &shape.table);
+  } else {
+    particles = build_particles<Real>(s, nullptr);
+  }
+  // Unless the scene says: polyhedra evaluate each pair once (their pairs are dear: 1.8x on the
+  // CPU), spheres from both sides (a sphere pair costs less than its slot's memory traffic).
+  const bool once = s.pair_evaluation == PairsKind::automatic ? std::string(Shape::name) != "sphere"
+                                                              : s.pair_evaluation == PairsKind::once;
+  const SimulationParams<Real> prm = simulation_params<Real>(s, once);
+  const World<Real> world = build_world<Real>(s);
+  using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+  // The run's identity, checked on restart: a checkpoint continues only the run that wrote it,
+  // and every physical input of the scene must be as it was (scene_identity.hpp).
+  const SceneIdentity scene_id = scene_identity(s);
+  const std::string identity = identity_text(scene_id);
+  Checkpoint<Real> restart;
+  std::string restart_log;  // the run's own bookkeeping saved after the identity
+  if (!o.restart.empty() && !o.comm) {  // over ranks: the parts are read below
+    restart = read_checkpoint<Real>(o.restart);
+    const std::string why = identity_difference(restart.text, scene_id, s, restart_log);
+    if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
+  }
+#if defined(BLAZE_MPI)
+  if (o.comm) {  // an MPI build: over its ranks, one or more (the same run on any number: canonical order)
+    if (s.pair_evaluation == PairsKind::once)
+      throw SceneError(s.place("simulation.pair_evaluation") + " = \"once\": a run over ranks evaluates pairs from both sides "
+                       "(\"both_sides\" or \"automatic\")");
+    SimulationParams<Real> p = prm;
+    p.pairs = PairEvaluation::both_sides;
+    using Run = DistributedSimulation<Sim>;
+    std::unique_ptr<Run> run;
+    if (o.restart.empty()) run = std::make_unique<Run>(*o.comm, p, build_laws<Law>(s), world, particles, shape);
+    else {
+      run = std::make_unique<Run>(*o.comm, p, build_laws<Law>(s), world, o.restart, shape);
+      const std::string why = identity_difference(run->restart_text(), scene_id, s, restart_log);
+      if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
+      restart.feeders = run->restart_feeders();
+    }
+    return drive<Real>(*run, s, o, world, shapes, identity, restart_log, restart.feeders, table_of<Real>(shape));
+  }
+#endif
+  Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
+                              : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
+  return drive<Real>(sim, s, o, world, shapes, identity, restart_log, restart.feeders, table_of<Real>(shape));
+}
 
 template <class Real, class Law>
 int run_law(const Scene& s, const Options& o) {

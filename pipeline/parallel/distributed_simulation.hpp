@@ -82,14 +82,14 @@ class DistributedSimulation {
                         const std::string& path, const Shape& shape, DecompositionKind kind = DecompositionKind::bisection,
                         double rebalance_above = 1.2)
       : comm_(comm), kind_(kind), rebalance_above_(rebalance_above), params_(check(params)) {
-    const int parts = checkpoint_parts(path);
+    const std::vector<std::string> files = checkpoint_files(path);
     ParticleRecords<Real> all;
     SimulationSnapshot<Real> counters;
-    for (int k = 0; k < parts; ++k) {
-      const Checkpoint<Real> c = read_checkpoint<Real>(part_path(path, k, parts));
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      const Checkpoint<Real> c = read_checkpoint<Real>(files[k]);
       if (k == 0) counters = c.snapshot, text_ = c.text, feeders_ = c.feeders;
       else if (c.snapshot.steps != counters.steps)
-        throw CheckpointError(part_path(path, k, parts) + ": written at step " + std::to_string(c.snapshot.steps) + ", part 0 at step " +
+        throw CheckpointError(files[k] + ": written at step " + std::to_string(c.snapshot.steps) + ", part 0 at step " +
                               std::to_string(counters.steps));
       else
         counters.removed_count += c.snapshot.removed_count, counters.removed_mass += c.snapshot.removed_mass,
@@ -168,6 +168,16 @@ class DistributedSimulation {
     }
     if (parts < 1) throw CheckpointError(path + ": no checkpoint parts (" + stem + "<n>) in " + dir.string());
     return parts;
+  }
+  // The files of the checkpoint at `path`: its parts, or the one file a single process wrote there
+  // (a run of the build without MPI continues on any number of ranks).
+  static std::vector<std::string> checkpoint_files(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) return {path};
+    const int parts = checkpoint_parts(path);
+    std::vector<std::string> out;
+    for (int k = 0; k < parts; ++k) out.push_back(part_path(path, k, parts));
+    return out;
   }
 
   Sim& local() { return *sim_; }
@@ -273,23 +283,41 @@ class DistributedSimulation {
     rebuild();
   }
 
+  // ---- what `blaze run`'s loop reads besides (apps/blaze/run_scene.hpp) ----
+  std::uint64_t neighbour_builds() const { return rebuilds_ + 1; }  // the first build, then each collective rebuild
+  auto& timer() { return sim_->timer(); }
+  bool world_moves() const { return sim_->world_moves(); }
+  auto world_poses() const { return sim_->world_poses(); }
+  // The rank's own particles (its piece of a frame), in the store's order, and with periodic axes
+  // their unwrapped positions.
+  ParticleState<Real> piece(std::vector<Vec3<double>>& unwrapped) const {
+    const ParticleState<Real> s = sim_->state();
+    const std::vector<Vec3<double>> u = sim_->unwrapped_positions(s);
+    std::vector<Index> which;
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (std::binary_search(owned_ids_.begin(), owned_ids_.end(), s.id[k])) which.push_back(static_cast<Index>(k));
+    unwrapped.clear();
+    if (!u.empty())
+      for (Index k : which) unwrapped.push_back(u[static_cast<std::size_t>(k)]);
+    return select_state(s, which);
+  }
+  // The last good state kept at a sample (Simulation::keep_state, each rank its own particles as
+  // they were then) and, when a guard stops the run, all of it on rank 0 (collective).
+  void keep_state() {
+    sim_->keep_state();
+    kept_ids_ = owned_ids_;
+  }
+  ParticleState<Real> kept_state() const {
+    const ParticleState<Real> s = sim_->kept_state();
+    std::vector<Index> which;
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (std::binary_search(kept_ids_.begin(), kept_ids_.end(), s.id[k])) which.push_back(static_cast<Index>(k));
+    return gather(select_state(s, which), 0);
+  }
+
   // Every rank's particles (owned) in permanent-id order on rank 0 (`root`), none on the others:
   // frames and the last good state written by one rank.
-  ParticleState<Real> gathered_state(int root = 0) const {
-    std::string mine;
-    pack_state(mine, owned_state());
-    const std::vector<std::string> all = comm_.all_gather_bytes(mine);
-    ParticleState<Real> out;
-    if (comm_.rank() != root) return out;
-    for (std::size_t k = 0; k < all.size(); ++k) {
-      ByteReader<CommunicatorError> in(all[k], "state from rank " + std::to_string(k) + ": ");
-      unpack_state(in, out);
-    }
-    std::vector<Index> order(out.size());
-    std::iota(order.begin(), order.end(), Index{0});
-    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return out.id[static_cast<std::size_t>(a)] < out.id[static_cast<std::size_t>(b)]; });
-    return select_state(out, order);
-  }
+  ParticleState<Real> gathered_state(int root = 0) const { return gather(owned_state(), root); }
 
   void step() {
     sim_->begin_step();
@@ -326,6 +354,22 @@ class DistributedSimulation {
       if (!((params_.periodic >> a) & 1u) && !(xa[a] >= la[a] && xa[a] < ha[a])) return false;
     return true;
   }
+  ParticleState<Real> gather(const ParticleState<Real>& part, int root) const {
+    std::string mine;
+    pack_state(mine, part);
+    const std::vector<std::string> all = comm_.all_gather_bytes(mine);
+    ParticleState<Real> out;
+    if (comm_.rank() != root) return out;
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      ByteReader<CommunicatorError> in(all[k], "state from rank " + std::to_string(k) + ": ");
+      unpack_state(in, out);
+    }
+    std::vector<Index> order(out.size());
+    std::iota(order.begin(), order.end(), Index{0});
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return out.id[static_cast<std::size_t>(a)] < out.id[static_cast<std::size_t>(b)]; });
+    return select_state(out, order);
+  }
+
   // v summed over the ranks in rank order (the same on every rank).
   std::vector<double> sum_in_rank_order(const std::vector<double>& v) const {
     std::string mine;
@@ -477,6 +521,7 @@ class DistributedSimulation {
   Decomposition decomposition_;
   std::unique_ptr<Sim> sim_;
   std::vector<Index> owned_ids_;                      // sorted
+  std::vector<Index> kept_ids_;                       // owned_ids_ at the last keep_state()
   std::vector<std::vector<Index>> send_, recv_;       // per rank: store indices
   Index removed_ = 0, next_id_ = 0, inserted_count_ = 0;
   double removed_mass_ = 0, removed_energy_ = 0, inserted_mass_ = 0, inserted_energy_ = 0, inserted_kinetic_ = 0;

@@ -110,6 +110,33 @@ class VtuFile {
     }
     vtu_detail::commit(tmp, path);
   }
+  // The parallel file (.pvtu) of a grid written in pieces (a run over ranks: each writes its own
+  // particles) that have this file's arrays: their names, types and components, and the pieces'
+  // file names relative to the .pvtu's folder (VTK's "Parallel XML" format).
+  void write_parallel(const std::string& path, const std::vector<std::string>& pieces) const {
+    const std::string tmp = path + ".tmp";
+    {
+      std::ofstream out(tmp);
+      if (!out) throw std::runtime_error("cannot write " + tmp);
+      auto header = [&](const Array& a, bool named) {
+        out << "      <PDataArray type=\"" << a.type << "\"";
+        if (named) out << " Name=\"" << a.name << "\"";
+        out << " NumberOfComponents=\"" << a.components << "\"/>\n";
+      };
+      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+             "header_type=\"UInt64\">\n  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPoints>\n";
+      header(points_, false);
+      out << "    </PPoints>\n    <PPointData>\n";
+      for (const auto& a : point_data_) header(a, true);
+      out << "    </PPointData>\n    <PCellData>\n";
+      for (const auto& a : cell_data_) header(a, true);
+      out << "    </PCellData>\n";
+      for (const auto& piece : pieces) out << "    <Piece Source=\"" << piece << "\"/>\n";
+      out << "  </PUnstructuredGrid>\n</VTKFile>\n";
+      if (!out) throw std::runtime_error("write failed: " + tmp);
+    }
+    vtu_detail::commit(tmp, path);
+  }
 
  private:
   struct Array {
@@ -137,7 +164,7 @@ class VtuFile {
 // `unwrapped`: periodic runs' unwrapped positions (Simulation::unwrapped_positions), written as
 // "unwrapped_position" beside the wrapped points; empty: none.
 template <class Real>
-void write_particles_vtu(const std::string& path, const ParticleState<Real>& s, const std::vector<Vec3<double>>& unwrapped = {}) {
+VtuFile particles_vtu(const ParticleState<Real>& s, const std::vector<Vec3<double>>& unwrapped = {}) {
   const std::size_t n = s.size();
   std::vector<Real> x, v, w, q, r(s.radius), m(s.mass);
   std::vector<std::int64_t> conn(n), offsets(n);
@@ -166,13 +193,17 @@ void write_particles_vtu(const std::string& path, const ParticleState<Real>& s, 
     for (const auto& p : unwrapped) u.insert(u.end(), {p.x, p.y, p.z});
     f.point_data("unwrapped_position", 3, u);
   }
-  f.write(path);
+  return f;
+}
+template <class Real>
+void write_particles_vtu(const std::string& path, const ParticleState<Real>& s, const std::vector<Vec3<double>>& unwrapped = {}) {
+  particles_vtu(s, unwrapped).write(path);
 }
 
 // Faces of the polyhedral particles in world position; shapes[type] is that type's body-frame
 // shape (no vertices: a sphere type, left out).
 template <class Real>
-void write_polyhedra_vtu(const std::string& path, const ParticleState<Real>& s, const std::vector<ConvexShape>& shapes) {
+VtuFile polyhedra_vtu(const ParticleState<Real>& s, const std::vector<ConvexShape>& shapes) {
   std::vector<Real> x, v;
   std::vector<std::int64_t> conn, offsets;
   std::vector<std::int32_t> id;
@@ -202,7 +233,11 @@ void write_polyhedra_vtu(const std::string& path, const ParticleState<Real>& s, 
   f.cell_data("id", 1, id);
   f.cell_data("type", 1, type);
   f.cell_data("velocity", 3, v);
-  f.write(path);
+  return f;
+}
+template <class Real>
+void write_polyhedra_vtu(const std::string& path, const ParticleState<Real>& s, const std::vector<ConvexShape>& shapes) {
+  polyhedra_vtu(s, shapes).write(path);
 }
 
 // World surfaces; a cylinder becomes `segments` quads around its axis.
