@@ -21,8 +21,8 @@ inline const char* to_string(RegionKind k) { return k == RegionKind::box ? "box"
 
 struct InsertionRegion {
   RegionKind kind = RegionKind::box;
-  Vec3<double> lo, hi;                  // m, box
-  Vec3<double> centre, axis{0, 0, 1};   // m, unit; cylinder and disc
+  Vec3<double> lo{0, 0, 0}, hi{0, 0, 0};  // m, box
+  Vec3<double> centre{0, 0, 0}, axis{0, 0, 1};  // m, unit; cylinder and disc (zero otherwise: the identity text prints them)
   double radius = 0, length = 0;        // m
 
   // A centre for a particle of bounding radius r (m).

@@ -93,10 +93,10 @@ struct ParticleTypeSpec {
 // Placements (thesis section 2.5: lattice blocks; plus explicit lists and random fills).
 struct LatticeSpec {
   int type = 0;
-  Vec3<double> origin;            // m, centre of the first site
+  Vec3<double> origin{0, 0, 0};            // m, centre of the first site
   std::array<long, 3> count{};    // sites along x, y, z
   double spacing = 0;             // m, >= 2 bounding radii
-  Vec3<double> velocity;          // m/s
+  Vec3<double> velocity{0, 0, 0};          // m/s
   double jitter = 0;              // fraction of the free gap, random offset per site
   bool random_orientation = true;  // polyhedra
 };
@@ -107,9 +107,9 @@ struct ListSpec {
 };
 struct FillSpec {
   int type = 0;
-  Vec3<double> lo, hi;  // m, box the particles (whole) lie in
+  Vec3<double> lo{0, 0, 0}, hi{0, 0, 0};  // m, box the particles (whole) lie in
   long count = 0;
-  Vec3<double> velocity;  // m/s
+  Vec3<double> velocity{0, 0, 0};  // m/s
 };
 
 // A feeder ([[feed]], pipeline/feeder.hpp): particles of one type placed at random in `region`
@@ -127,7 +127,7 @@ struct FeedSpec {
   double rate = 0;                // particles/s (0: mass_rate)
   double mass_rate = 0;           // kg/s (0: rate)
   long count = 0;                 // the most particles it inserts (0: no limit)
-  Vec3<double> velocity;          // m/s
+  Vec3<double> velocity{0, 0, 0};          // m/s
   double spread = 0;              // m/s
   bool random_orientation = true;
   double interval = 0;            // s between insertions
@@ -146,7 +146,7 @@ struct WallSpec {  // convex planar polygon; the normal follows the right-hand r
 struct CylinderSpec {  // drum: particles inside, contact on the inner surface
   std::string name;  // "mill shell" for a [mill]'s; empty otherwise
   int material = 0;
-  Vec3<double> origin, axis;  // m, centre of the first end; direction (any length)
+  Vec3<double> origin{0, 0, 0}, axis{0, 0, 0};  // m, centre of the first end; direction (any length)
   double radius = 0, length = 0;
   Motion motion;
   ContactClass contact_class = ContactClass::wall;
@@ -175,7 +175,7 @@ struct MeshSpec {
   double scale = 1;             // m per file unit
   Vec3<double> axis{0, 0, 1};   // unit (rotate)
   double degrees = 0;           // rotate
-  Vec3<double> translate;       // m
+  Vec3<double> translate{0, 0, 0};       // m
   bool flip = false;
   Motion motion;
   ContactClass contact_class = ContactClass::wall;
@@ -216,9 +216,9 @@ struct Scene {
   double dt = 0;                 // s (given, or t_c / steps_per_contact)
   double steps_per_contact = 0;  // when dt is derived from the contact time
   double end_time = 0;           // s
-  Vec3<double> gravity;          // m/s^2
+  Vec3<double> gravity{0, 0, 0};          // m/s^2
   double drag = 0;               // kg/m
-  Vec3<double> domain_lo, domain_hi;  // m
+  Vec3<double> domain_lo{0, 0, 0}, domain_hi{0, 0, 0};  // m
   double skin = 0.2;             // neighbour-list skin / largest bounding radius
   unsigned periodic = 0;         // periodic axes, bit 0: x, 1: y, 2: z (grid/periodic_images.hpp)
   PairsKind pair_evaluation = PairsKind::automatic;  // auto: once for polyhedra, both sides for spheres
