@@ -124,7 +124,7 @@ $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 $(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze $(BUILD)/mpi/blaze_mpi_tests
+build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze $(BUILD)/mpi/blaze_mpi_tests $(BUILD)/mpi/apps/blaze/main.o
 build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD)/cuda/blaze_bench $(BUILD)/cuda/blaze
 
 # Compile (not run) the CUDA build so GPU code cannot rot unseen.

@@ -184,7 +184,7 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
   const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
   const std::uint64_t checkpoint_every = every(s.output.checkpoint_interval);
-  Progress progress(!o.quiet, s.end_time);
+  Progress progress(!o.quiet && root, s.end_time);  // over ranks rank 0's line
   double particle_steps = 0;
   const std::uint64_t first = sim.steps();
   Index sim_size = sim.size();

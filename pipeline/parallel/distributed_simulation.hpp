@@ -323,7 +323,9 @@ class DistributedSimulation {
     sim_->begin_step();
     refresh_ghosts();
     const long code = comm_.max(static_cast<long>(sim_->needs_rebuild()));
-    if (code == 2) throw std::runtime_error("distributed run: a position is not finite at step " + std::to_string(steps() + 1));
+    if (code == 2)  // on every rank: the guard's report and the last good state are collective
+      throw NonFiniteState("a position is not finite at step " + std::to_string(steps() + 1) + " (a run over ranks: the particle's rank "
+                           "found it)", steps() + 1, -1);
     if (code == 1) rebuild();
     sim_->end_step();
   }

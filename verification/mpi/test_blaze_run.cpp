@@ -97,6 +97,37 @@ vertices = [[-0.04, 0.0, 0.04], [-0.04, 0.2, 0.04], [0.04, 0.2, 0.04], [0.04, 0.
 rim = false
 )";
 
+// The same bed periodic along x (thesis-style slice; grid/periodic_images.hpp): no walls across x,
+// the floor and the z walls reaching past the period, everything moving in +x so that particles
+// cross the periodic faces (and the ranks' boxes) with their contacts.
+std::string periodic_scene() {
+  std::string t = kScene;
+  t = t.substr(0, t.find("[[wall]]"));  // the walls below instead
+  const auto swap = [&](const std::string& from, const std::string& to) {
+    const auto at = t.find(from);
+    if (at == std::string::npos) throw std::logic_error("periodic scene: no '" + from + "'");
+    t.replace(at, from.size(), to);
+  };
+  swap("domain_lo = [-0.05, -0.01, -0.05]", "domain_lo = [-0.04, -0.01, -0.05]");
+  swap("domain_hi = [0.05, 0.25, 0.05]", "domain_hi = [0.04, 0.25, 0.05]\nperiodic = [\"x\"]");
+  swap("velocity = [0.0, -0.3, 0.0]", "velocity = [0.6, -0.3, 0.0]");
+  swap("velocity = [0.0, -0.5, 0.0]", "velocity = [0.4, -0.5, 0.0]");
+  return t + R"([[wall]]
+name = "floor"
+material = "glass"
+vertices = [[-0.05, 0.0, -0.04], [-0.05, 0.0, 0.04], [0.05, 0.0, 0.04], [0.05, 0.0, -0.04]]
+rim = false
+[[wall]]
+material = "glass"
+vertices = [[0.05, 0.0, -0.04], [0.05, 0.2, -0.04], [-0.05, 0.2, -0.04], [-0.05, 0.0, -0.04]]
+rim = false
+[[wall]]
+material = "glass"
+vertices = [[-0.05, 0.0, 0.04], [-0.05, 0.2, 0.04], [0.05, 0.2, 0.04], [0.05, 0.0, 0.04]]
+rim = false
+)";
+}
+
 // One `blaze run` of the scene on `comm`'s ranks (null: not a rank of it) into `dir`.
 int run(const Communicator* comm, const std::string& scene, const std::string& dir, std::vector<std::string> overrides,
         const std::string& restart = "") {
@@ -163,22 +194,28 @@ long points_of(const std::string& vtu) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(distributed_blaze_run)
+namespace {
 
-BOOST_AUTO_TEST_CASE(a_fed_scene_over_ranks_is_the_one_rank_run) {
-  const Communicator comm;
-  const int n = comm.size();
-  // a folder for the runs, named by rank 0
+// A folder for a case's runs, named by rank 0, with the scene in it.
+std::string scene_folder(const Communicator& comm, const std::string& text) {
   std::string base;
   if (comm.rank() == 0) {
     char tmpl[] = "/tmp/blaze_mpi_run_XXXXXX";
     base = mkdtemp(tmpl) ? tmpl : "";
+    if (!base.empty()) std::ofstream(base + "/scene.toml") << text;
   }
   base = comm.all_gather_bytes(base)[0];
-  BOOST_TEST(!base.empty());
-  const std::string scene = base + "/scene.toml";
-  if (comm.rank() == 0) std::ofstream(scene) << kScene;
   comm.barrier();
+  return base;
+}
+
+// The scene run over all ranks, on one, stopped and continued on one rank fewer: see the top.
+void check_over_ranks(const std::string& scene_text, const std::string& label) {
+  const Communicator comm;
+  const int n = comm.size();
+  const std::string base = scene_folder(comm, scene_text);
+  BOOST_TEST_REQUIRE(!base.empty());  // (the same on every rank)
+  const std::string scene = base + "/scene.toml";
   const Communicator one = comm.first(1), fewer = comm.first(std::max(1, n - 1));
   const bool in_one = one.size() > 0, in_fewer = fewer.size() > 0;
 
@@ -189,7 +226,7 @@ BOOST_AUTO_TEST_CASE(a_fed_scene_over_ranks_is_the_one_rank_run) {
   comm.barrier();
   if (comm.rank() != 0) return;
 
-  const std::string ranks = ", " + std::to_string(n) + " rank" + (n > 1 ? "s" : "");
+  const std::string ranks = ", " + label + ", " + std::to_string(n) + " rank" + (n > 1 ? "s" : "");
   const Final a = final_state(base + "/many/checkpoint.blz"), b = final_state(base + "/one/checkpoint.blz"),
               c = final_state(base + "/continued/checkpoint.blz");
   double worst = 0, worst_continued = 0;
@@ -280,6 +317,49 @@ BOOST_AUTO_TEST_CASE(a_fed_scene_over_ranks_is_the_one_rank_run) {
   BOOST_TEST(frames_wrong == 0);
   std::error_code ec;
   std::filesystem::remove_all(base, ec);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(distributed_blaze_run)
+
+BOOST_AUTO_TEST_CASE(a_fed_scene_over_ranks_is_the_one_rank_run) { check_over_ranks(kScene, "box"); }
+
+BOOST_AUTO_TEST_CASE(a_fed_periodic_slice_over_ranks_is_the_one_rank_run) { check_over_ranks(periodic_scene(), "periodic along x"); }
+
+// What a run over ranks refuses, on every rank alike (none is left waiting): pairs evaluated once,
+// a checkpoint that is not there, parts of two checkpoints in one folder.
+BOOST_AUTO_TEST_CASE(a_run_over_ranks_refuses_what_it_cannot_do) {
+  const Communicator comm;
+  const std::string base = scene_folder(comm, kScene);
+  BOOST_TEST_REQUIRE(!base.empty());
+  const std::string scene = base + "/scene.toml";
+  const auto message = [&](std::vector<std::string> overrides, const std::string& restart) {
+    overrides.push_back("output.directory=\"" + base + "/out\"");
+    try {
+      app::Options o;
+      o.scene = scene, o.quiet = true, o.comm = &comm, o.restart = restart, o.overrides = overrides;
+      app::run_spring<double>(load_scene(scene, overrides), o);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string once = message({"simulation.pair_evaluation=\"once\"", "simulation.end_time=0.001"}, "");
+  BOOST_TEST(once.find("key 'pair_evaluation'") != std::string::npos, once);
+  BOOST_TEST(once.find("both_sides") != std::string::npos, once);
+  const std::string missing = message({}, base + "/nowhere/checkpoint.blz");
+  BOOST_TEST(missing.find("nowhere/checkpoint.blz") != std::string::npos, missing);
+  BOOST_TEST(missing.find("no checkpoint parts") != std::string::npos, missing);
+  if (comm.rank() == 0) {  // parts of a 2-rank and a 3-rank checkpoint side by side
+    for (const char* part : {"/two.blz.part0of2", "/two.blz.part0of3"}) std::ofstream(base + part) << "x";
+  }
+  comm.barrier();
+  const std::string mixed = message({}, base + "/two.blz");
+  BOOST_TEST(mixed.find("more than one checkpoint") != std::string::npos, mixed);
+  comm.barrier();
+  std::error_code ec;
+  if (comm.rank() == 0) std::filesystem::remove_all(base, ec);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
