@@ -166,6 +166,17 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   PvdCollection pvd(dir + "/particles.pvd"), pvd_faces(dir + "/polyhedra.pvd");
   // A world that moves gets a walls frame with every particles frame (walls.vtu: where it started).
   std::unique_ptr<PvdCollection> pvd_walls = sim.world_moves() ? std::make_unique<PvdCollection>(dir + "/walls.pvd") : nullptr;
+  // One frame's file (stem: vtu/name): whole, or over ranks this rank's piece (stem_rK.vtu) and
+  // on rank 0 the .pvtu naming every rank's; the collection names the frame.
+  const auto write_frame = [&](const VtuFile& file, const std::string& stem, PvdCollection& collection, double t) {
+    file.write(dir + "/" + stem + (pieces > 1 ? "_r" + std::to_string(rank) : std::string()) + ".vtu");
+    if (pieces > 1 && root) {
+      std::vector<std::string> names;
+      for (int r = 0; r < pieces; ++r) names.push_back(stem.substr(stem.find('/') + 1) + "_r" + std::to_string(r) + ".vtu");
+      file.write_parallel(dir + "/" + stem + ".pvtu", names);
+    }
+    if (root) collection.add(t, stem + (pieces > 1 ? ".pvtu" : ".vtu"));
+  };
   int frame = 0;
   constexpr long kMaxFeedNotes = 10;
   long feed_notes = 0;
@@ -236,15 +247,7 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
       frames.start([&, st, unwrapped, walls, f = frame++, t = sim.time()] {
         char name[64];
         std::snprintf(name, sizeof name, "vtu/particles_%04d", f);
-        const std::string piece = pieces > 1 ? std::string(name) + "_r" + std::to_string(rank) + ".vtu" : std::string(name) + ".vtu";
-        const VtuFile file = particles_vtu(*st, *unwrapped);
-        file.write(dir + "/" + piece);
-        if (pieces > 1 && root) {  // the frame's pieces, by name: rank k writes its own
-          std::vector<std::string> names;
-          for (int r = 0; r < pieces; ++r) names.push_back(std::string(name + 4) + "_r" + std::to_string(r) + ".vtu");
-          file.write_parallel(dir + "/" + name + ".pvtu", names);
-        }
-        if (root) pvd.add(t, std::string(name) + (pieces > 1 ? ".pvtu" : ".vtu"));
+        write_frame(particles_vtu(*st, *unwrapped), name, pvd, t);
         if (walls) {
           std::snprintf(name, sizeof name, "vtu/walls_%04d.vtu", f);
           write_world_vtu(dir + "/" + name, *walls);
@@ -252,15 +255,7 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
         }
         if constexpr (polyhedra) {
           std::snprintf(name, sizeof name, "vtu/polyhedra_%04d", f);
-          const std::string faces = pieces > 1 ? std::string(name) + "_r" + std::to_string(rank) + ".vtu" : std::string(name) + ".vtu";
-          const VtuFile poly = polyhedra_vtu(*st, shapes);
-          poly.write(dir + "/" + faces);
-          if (pieces > 1 && root) {
-            std::vector<std::string> names;
-            for (int r = 0; r < pieces; ++r) names.push_back(std::string(name + 4) + "_r" + std::to_string(r) + ".vtu");
-            poly.write_parallel(dir + "/" + name + ".pvtu", names);
-          }
-          if (root) pvd_faces.add(t, std::string(name) + (pieces > 1 ? ".pvtu" : ".vtu"));
+          write_frame(polyhedra_vtu(*st, shapes), name, pvd_faces, t);
         }
       });
     }

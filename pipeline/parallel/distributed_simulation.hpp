@@ -130,10 +130,7 @@ class DistributedSimulation {
   void write_checkpoint(const std::string& path, const std::string& text = "", const std::string& feeders = "") {
     const StoreSnapshot<Real> store = sim_->store_snapshot();
     const ContactSnapshot<Real> contacts = sim_->contact_snapshot();
-    std::vector<Index> mine;
-    for (std::size_t k = 0; k < store.id.size(); ++k)
-      if (std::binary_search(owned_ids_.begin(), owned_ids_.end(), store.id[k])) mine.push_back(static_cast<Index>(k));
-    const ParticleRecords<Real> r = select_records(store, contacts, mine);
+    const ParticleRecords<Real> r = select_records(store, contacts, rows_of(store.id, owned_ids_));
     SimulationSnapshot<Real> s;
     s.store = r.store, s.contacts = r.contacts, s.steps = steps(), s.removed_count = removed_;
     s.removed_mass = removed_mass_, s.removed_energy = removed_energy_, s.next_id = next_id_;
@@ -243,7 +240,6 @@ class DistributedSimulation {
   }
 
   // ---- feeders (pipeline/feeder.hpp), run alike on every rank ----
-  std::uint64_t feeder_steps() const { return steps(); }
   // The centres and bounding radii in [lo, hi] on every rank (owned and ghosts: a particle may come
   // twice, which changes no overlap test), gathered in rank order: the same on every rank.
   void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre, std::vector<double>& radius) {
@@ -293,9 +289,7 @@ class DistributedSimulation {
   ParticleState<Real> piece(std::vector<Vec3<double>>& unwrapped) const {
     const ParticleState<Real> s = sim_->state();
     const std::vector<Vec3<double>> u = sim_->unwrapped_positions(s);
-    std::vector<Index> which;
-    for (std::size_t k = 0; k < s.size(); ++k)
-      if (std::binary_search(owned_ids_.begin(), owned_ids_.end(), s.id[k])) which.push_back(static_cast<Index>(k));
+    const std::vector<Index> which = rows_of(s.id, owned_ids_);
     unwrapped.clear();
     if (!u.empty())
       for (Index k : which) unwrapped.push_back(u[static_cast<std::size_t>(k)]);
@@ -309,10 +303,7 @@ class DistributedSimulation {
   }
   ParticleState<Real> kept_state() const {
     const ParticleState<Real> s = sim_->kept_state();
-    std::vector<Index> which;
-    for (std::size_t k = 0; k < s.size(); ++k)
-      if (std::binary_search(kept_ids_.begin(), kept_ids_.end(), s.id[k])) which.push_back(static_cast<Index>(k));
-    return gather(select_state(s, which), 0);
+    return gather(select_state(s, rows_of(s.id, kept_ids_)), 0);
   }
 
   // Every rank's particles (owned) in permanent-id order on rank 0 (`root`), none on the others:
@@ -336,9 +327,7 @@ class DistributedSimulation {
   // The particles this rank owns, in permanent-id order.
   ParticleState<Real> owned_state() const {
     const ParticleState<Real> s = sim_->state();
-    std::vector<Index> which;
-    for (std::size_t k = 0; k < s.size(); ++k)
-      if (std::binary_search(owned_ids_.begin(), owned_ids_.end(), s.id[k])) which.push_back(static_cast<Index>(k));
+    std::vector<Index> which = rows_of(s.id, owned_ids_);
     std::sort(which.begin(), which.end(), [&](Index a, Index b) { return s.id[static_cast<std::size_t>(a)] < s.id[static_cast<std::size_t>(b)]; });
     return select_state(s, which);
   }
@@ -355,6 +344,13 @@ class DistributedSimulation {
     for (int a = 0; a < 3; ++a)
       if (!((params_.periodic >> a) & 1u) && !(xa[a] >= la[a] && xa[a] < ha[a])) return false;
     return true;
+  }
+  // The rows whose permanent id is in `sorted` (a rank's own particles among its store's).
+  static std::vector<Index> rows_of(const std::vector<Index>& id, const std::vector<Index>& sorted) {
+    std::vector<Index> rows;
+    for (std::size_t k = 0; k < id.size(); ++k)
+      if (std::binary_search(sorted.begin(), sorted.end(), id[k])) rows.push_back(static_cast<Index>(k));
+    return rows;
   }
   ParticleState<Real> gather(const ParticleState<Real>& part, int root) const {
     std::string mine;
