@@ -232,10 +232,6 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
     const auto output_start = std::chrono::steady_clock::now();
-    if (checkpoint_every && k > first && k % checkpoint_every == 0) {
-      if constexpr (kRanks) sim.write_checkpoint(dir + "/checkpoint.blz", identity + log.save(), save_feeders(feeders));
-      else write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save(), save_feeders(feeders));
-    }
     if (write_csv || write_vtu) {
       if (write_csv) log.sample(sim);  // the guards: a state that trips one is not a good one
       sim.keep_state();
@@ -258,6 +254,13 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
           write_frame(polyhedra_vtu(*st, shapes), name, pvd_faces, t);
         }
       });
+    }
+    // The checkpoint after the sample: of a state the guards passed, with this row in its log's
+    // sums; it rebuilds the lists (both kinds of run alike, so they stay bitwise one another), and
+    // the sample read the last force evaluation's statistics in the order they were counted.
+    if (checkpoint_every && k > first && k % checkpoint_every == 0) {
+      if constexpr (kRanks) sim.write_checkpoint(dir + "/checkpoint.blz", identity + log.save(), save_feeders(feeders));
+      else write_checkpoint(dir + "/checkpoint.blz", sim.snapshot(), identity + log.save(), save_feeders(feeders));
     }
     output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
     if (k >= steps) break;  // (a restart may begin at or past the end)
@@ -359,20 +362,32 @@ int run_scene(const Scene& s, const Options& o) {
   // and every physical input of the scene must be as it was (scene_identity.hpp).
   const SceneIdentity scene_id = scene_identity(s);
   const std::string identity = identity_text(scene_id);
+  // An MPI build runs over its ranks with a DistributedSimulation; on one rank, unless it continues
+  // a checkpoint written in parts, with the plain Simulation in canonical order: bitwise the run
+  // over any number of ranks, without the distributed step's collective checks every step and with
+  // the batched steps of small systems (one rank costs what the plain build costs).
+#if defined(BLAZE_MPI)
+  std::error_code no_file;
+  const bool over_ranks = o.comm && (o.comm->size() > 1 || (!o.restart.empty() && !std::filesystem::is_regular_file(o.restart, no_file)));
+#else
+  constexpr bool over_ranks = false;
+#endif
+  SimulationParams<Real> p = prm;
+  if (o.comm) {
+    if (s.pair_evaluation == PairsKind::once)
+      throw SceneError(s.place("simulation.pair_evaluation") + " = \"once\": a run over ranks evaluates pairs from both sides "
+                       "(\"both_sides\" or \"automatic\")");
+    p.pairs = PairEvaluation::both_sides, p.canonical_order = true;
+  }
   Checkpoint<Real> restart;
   std::string restart_log;  // the run's own bookkeeping saved after the identity
-  if (!o.restart.empty() && !o.comm) {  // over ranks: the parts are read below
+  if (!o.restart.empty() && !over_ranks) {  // over ranks: the parts are read below
     restart = read_checkpoint<Real>(o.restart);
     const std::string why = identity_difference(restart.text, scene_id, s, restart_log);
     if (!why.empty()) throw CheckpointError(o.restart + ": cannot continue this scene: " + why);
   }
 #if defined(BLAZE_MPI)
-  if (o.comm) {  // an MPI build: over its ranks, one or more (the same run on any number: canonical order)
-    if (s.pair_evaluation == PairsKind::once)
-      throw SceneError(s.place("simulation.pair_evaluation") + " = \"once\": a run over ranks evaluates pairs from both sides "
-                       "(\"both_sides\" or \"automatic\")");
-    SimulationParams<Real> p = prm;
-    p.pairs = PairEvaluation::both_sides;
+  if (over_ranks) {  // the same run on any number of ranks (canonical order)
     using Run = DistributedSimulation<Sim>;
     std::unique_ptr<Run> run;
     if (o.restart.empty()) run = std::make_unique<Run>(*o.comm, p, build_laws<Law>(s), world, particles, shape);
@@ -385,8 +400,8 @@ int run_scene(const Scene& s, const Options& o) {
     return drive<Real>(*run, s, o, world, shapes, identity, restart_log, restart.feeders, table_of<Real>(shape));
   }
 #endif
-  Sim sim = o.restart.empty() ? Sim(prm, build_laws<Law>(s), world, particles, shape)
-                              : Sim(prm, build_laws<Law>(s), world, restart.snapshot, shape);
+  Sim sim = o.restart.empty() ? Sim(p, build_laws<Law>(s), world, particles, shape)
+                              : Sim(p, build_laws<Law>(s), world, restart.snapshot, shape);
   return drive<Real>(sim, s, o, world, shapes, identity, restart_log, restart.feeders, table_of<Real>(shape));
 }
 

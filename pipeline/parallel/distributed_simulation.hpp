@@ -128,6 +128,9 @@ class DistributedSimulation {
   // `path`.part<rank>of<ranks> (io/checkpoint.hpp: atomically, checksummed); returns when all have,
   // or throws on every rank when any could not (naming the first rank's error).
   void write_checkpoint(const std::string& path, const std::string& text = "", const std::string& feeders = "") {
+    // at a rebuild, as one process's checkpoint (Simulation::snapshot): periodic particles wrapped
+    // at the same step, so a one-rank run of the plain Simulation stays bitwise this one
+    rebuild();
     const StoreSnapshot<Real> store = sim_->store_snapshot();
     const ContactSnapshot<Real> contacts = sim_->contact_snapshot();
     const ParticleRecords<Real> r = select_records(store, contacts, rows_of(store.id, owned_ids_));
