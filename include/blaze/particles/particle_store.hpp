@@ -195,7 +195,8 @@ class ParticleStore {
     for (auto& c : ledger_)
       if (c.size() < static_cast<std::size_t>(n_)) from_host(c, std::vector<Real>(n_, Real(0)));
     from_host(class_sums_, std::vector<Real>(kClassSumReals * static_cast<std::size_t>(n_), Real(0)));
-    from_host(thesis_, std::vector<Real>(thesis_estimate ? n_ : 0, Real(0)));  // not in snapshots: from zero
+    if (!thesis_estimate) thesis_.resize(0);  // (a snapshot's, or zero from here)
+    else if (thesis_.size() < static_cast<std::size_t>(n_)) from_host(thesis_, std::vector<Real>(n_, Real(0)));
     with_ledger_ = true, with_thesis_ = thesis_estimate;
   }
   bool keeps_ledger() const { return with_ledger_; }
@@ -231,10 +232,12 @@ class ParticleStore {
   }
   void restore(const Snapshot& s) {
     const auto fields = real_fields();
-    // the energy accounts are the last fields: a snapshot from before the dissipation columns
-    // holds only the drive's, one from before moving walls none
-    const std::size_t ledger_at = fields.size() - kLedgerColumns;
-    if (s.reals.size() != fields.size() && s.reals.size() != ledger_at + 1 && s.reals.size() != ledger_at)
+    // the energy accounts and the thesis's estimate are the last fields: a snapshot from before the
+    // estimate was kept lacks it, one from before the dissipation columns holds only the drive's,
+    // one from before moving walls none
+    const std::size_t ledger_at = fields.size() - 1 - kLedgerColumns;
+    if (s.reals.size() != fields.size() && s.reals.size() != fields.size() - 1 && s.reals.size() != ledger_at + 1 &&
+        s.reals.size() != ledger_at)
       throw std::invalid_argument("particle snapshot: wrong number of fields");
     n_ = static_cast<Index>(s.id.size());
     for (auto& c : ledger_) c.resize(0);
@@ -410,6 +413,7 @@ class ParticleStore {
     for (auto& c : orientation_) f.push_back(&c);
     for (auto* c : {&radius_, &inv_mass_, &inv_inertia_, &penetration_}) f.push_back(c);
     for (auto& c : ledger_) f.push_back(&c);  // last: older snapshots lack some (restore())
+    f.push_back(&thesis_);                      // (Features::thesis_power's; absent before stop 39)
     if (f[kRadiusField] != &radius_ || f[Snapshot::kPositionField] != &position_[0] || f[Snapshot::kVelocityField] != &velocity_[0] ||
         f[Snapshot::kInverseMassField] != &inv_mass_)
       throw std::logic_error("ParticleStore: the snapshot's field places are stale");
