@@ -109,6 +109,9 @@ $(BUILD)/mpi/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi/%.o) $(HOST_OBJ)
 # blaze run over ranks (mpirun -np N build/mpi/blaze run SCENE.toml; apps/blaze/run_scene.hpp).
 $(BUILD)/mpi/blaze: $(BLAZE_SRC:%.cpp=$(BUILD)/mpi/%.o) $(HOST_OBJ)
 	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@
+# The mill study over ranks (mpirun -np N build/mpi/study_mill SCENE.toml; studies/mill/mill_run.hpp).
+$(BUILD)/mpi/study_mill: $(BUILD)/mpi/studies/mill/main.o $(HOST_OBJ)
+	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@
 # The same suite on the CUDA backend (ranks sharing the GPUs; the GPU machine's header-only
 # Boost.Test): MPI's flags from mpicxx, or MPI_DIR=<prefix with include/ and lib/>.
 MPI_DIR ?=
@@ -124,7 +127,7 @@ $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 $(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze $(BUILD)/mpi/blaze_mpi_tests $(BUILD)/mpi/apps/blaze/main.o
+build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze $(BUILD)/mpi/blaze_mpi_tests $(BUILD)/mpi/apps/blaze/main.o $(BUILD)/mpi/study_mill
 build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD)/cuda/blaze_bench $(BUILD)/cuda/blaze
 
 # Compile (not run) the CUDA build so GPU code cannot rot unseen.

@@ -99,28 +99,6 @@ int run_precision(const Scene& s, const Options& o) {
 }
 
 // Over ranks an error names its rank, and stops every rank (the others may wait in a collective).
-std::string rank_label() {
-#if defined(BLAZE_MPI)
-  int on = 0, size = 1, rank = 0;
-  MPI_Initialized(&on);
-  if (on) MPI_Comm_size(MPI_COMM_WORLD, &size), MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (size > 1) return "rank " + std::to_string(rank) + ": ";
-#endif
-  return "";
-}
-int stop_ranks(int code) {
-#if defined(BLAZE_MPI)
-  int on = 0, size = 1;
-  MPI_Initialized(&on);
-  if (on) MPI_Comm_size(MPI_COMM_WORLD, &size);
-  if (size > 1) {
-    std::fflush(stderr);
-    MPI_Abort(MPI_COMM_WORLD, code);
-  }
-#endif
-  return code;
-}
-
 }  // namespace
 int main(int argc, char** argv) try {
   blaze::line_buffered_output();

@@ -8,6 +8,7 @@
 // Every rank must make the same calls in the same order (they are collective).
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -163,5 +164,30 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
 };
 #endif
+
+// For a program's error report: "rank K: " when it runs over several ranks, else "".
+inline std::string rank_label() {
+#if BLAZE_MPI
+  int on = 0, size = 1, rank = 0;
+  MPI_Initialized(&on);
+  if (on) MPI_Comm_size(MPI_COMM_WORLD, &size), MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (size > 1) return "rank " + std::to_string(rank) + ": ";
+#endif
+  return "";
+}
+// A program's exit on an error: over several ranks every rank stops (MPI_Abort; the others may be
+// waiting in a collective), else `code` is returned.
+inline int stop_ranks(int code) {
+#if BLAZE_MPI
+  int on = 0, size = 1;
+  MPI_Initialized(&on);
+  if (on) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1) {
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, code);
+  }
+#endif
+  return code;
+}
 
 }  // namespace blaze

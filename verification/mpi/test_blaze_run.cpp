@@ -22,6 +22,7 @@
 #include <sstream>
 #include "apps/blaze/run_scene.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "verification/mpi/run_files.hpp"
 #include "verification/report.hpp"
 #include "verification/tolerances.hpp"
 
@@ -167,23 +168,6 @@ Final final_state(const std::string& path) {
   return f;
 }
 
-std::vector<std::vector<double>> csv_rows(const std::string& path, std::vector<std::string>& header) {
-  std::ifstream in(path);
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  for (bool first = true; std::getline(in, line); first = false) {
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(ss, cell, ',')) {
-      if (first) header.push_back(cell);
-      else row.push_back(std::stod(cell));
-    }
-    if (!first) rows.push_back(row);
-  }
-  return rows;
-}
-
 long points_of(const std::string& vtu) {
   std::ifstream in(vtu, std::ios::binary);
   std::string head(4096, '\0');
@@ -195,19 +179,6 @@ long points_of(const std::string& vtu) {
 }  // namespace
 
 namespace {
-
-// A folder for a case's runs, named by rank 0, with the scene in it.
-std::string scene_folder(const Communicator& comm, const std::string& text) {
-  std::string base;
-  if (comm.rank() == 0) {
-    char tmpl[] = "/tmp/blaze_mpi_run_XXXXXX";
-    base = mkdtemp(tmpl) ? tmpl : "";
-    if (!base.empty()) std::ofstream(base + "/scene.toml") << text;
-  }
-  base = comm.all_gather_bytes(base)[0];
-  comm.barrier();
-  return base;
-}
 
 // The scene run over all ranks, on one, stopped and continued on one rank fewer: see the top.
 void check_over_ranks(const std::string& scene_text, const std::string& label) {
