@@ -98,7 +98,6 @@ int run_precision(const Scene& s, const Options& o) {
   return app::run_rolling<Real>(s, o);
 }
 
-// Over ranks an error names its rank, and stops every rank (the others may wait in a collective).
 }  // namespace
 int main(int argc, char** argv) try {
   blaze::line_buffered_output();
@@ -149,7 +148,7 @@ int main(int argc, char** argv) try {
     return 0;
   }
   return s.precision == PrecisionKind::float32 ? run_precision<float>(s, o) : run_precision<double>(s, o);
-} catch (const SceneError& e) {
+} catch (const SceneError& e) {  // over ranks: naming the rank, stopping every rank (communicator.hpp)
   std::fprintf(stderr, "blaze: %sscene rejected: %s\n", rank_label().c_str(), e.what());
   return stop_ranks(1);
 } catch (const std::exception& e) {

@@ -365,7 +365,8 @@ int run_scene(const Scene& s, const Options& o) {
   // An MPI build runs over its ranks with a DistributedSimulation; on one rank, unless it continues
   // a checkpoint written in parts, with the plain Simulation in canonical order: bitwise the run
   // over any number of ranks, without the distributed step's collective checks every step and with
-  // the batched steps of small systems (one rank costs what the plain build costs).
+  // the batched steps of small systems (one rank costs the plain build's time, MPI's start and
+  // canonical order's ~10%: bench/README.md, issue 21).
 #if defined(BLAZE_MPI)
   std::error_code no_file;
   const bool over_ranks = o.comm && (o.comm->size() > 1 || (!o.restart.empty() && !std::filesystem::is_regular_file(o.restart, no_file)));
