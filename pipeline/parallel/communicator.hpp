@@ -123,6 +123,14 @@ class Communicator {
     std::vector<std::string> out(static_cast<std::size_t>(size_), mine);
     return exchange(out);
   }
+  // Every rank's `mine` on rank `root`, in rank order (empty strings on the others): what a gather
+  // to one rank moves, 1/size of all_gather_bytes' (an exchange sending to `root` only).
+  std::vector<std::string> gather_bytes(const std::string& mine, int root) const {
+    if (root < 0 || root >= size_) throw CommunicatorError("communicator: gather to rank " + std::to_string(root) + " of " + std::to_string(size_));
+    std::vector<std::string> out(static_cast<std::size_t>(size_));
+    out[static_cast<std::size_t>(root)] = mine;
+    return exchange(out);
+  }
   void barrier() const {
 #if BLAZE_MPI
     check(MPI_Barrier(*comm_), "MPI_Barrier");

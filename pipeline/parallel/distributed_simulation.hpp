@@ -358,7 +358,7 @@ class DistributedSimulation {
   ParticleState<Real> gather(const ParticleState<Real>& part, int root) const {
     std::string mine;
     pack_state(mine, part);
-    const std::vector<std::string> all = comm_.all_gather_bytes(mine);
+    const std::vector<std::string> all = comm_.gather_bytes(mine, root);
     ParticleState<Real> out;
     if (comm_.rank() != root) return out;
     for (std::size_t k = 0; k < all.size(); ++k) {

@@ -237,4 +237,20 @@ BOOST_AUTO_TEST_CASE(records_survive_packing_and_bad_messages_are_refused) {
   }
 }
 
+// A gather to one rank (frames, a guard's last good state, the mill study's charge): every rank's
+// bytes arrive on the root in rank order, whichever rank it is, and nothing on the others.
+BOOST_AUTO_TEST_CASE(a_gather_brings_every_ranks_bytes_to_the_root_alone) {
+  const Communicator comm;
+  const std::string mine(static_cast<std::size_t>(comm.rank() + 1) * 1000, static_cast<char>('a' + comm.rank()));
+  for (int root = 0; root < comm.size(); ++root) {
+    const std::vector<std::string> got = comm.gather_bytes(mine, root);
+    BOOST_TEST_REQUIRE(got.size() == static_cast<std::size_t>(comm.size()));
+    for (int r = 0; r < comm.size(); ++r) {
+      const std::string want = comm.rank() == root ? std::string(static_cast<std::size_t>(r + 1) * 1000, static_cast<char>('a' + r)) : "";
+      BOOST_TEST(got[static_cast<std::size_t>(r)] == want, "root " << root << ", from rank " << r);
+    }
+  }
+  BOOST_CHECK_THROW(comm.gather_bytes(mine, comm.size()), CommunicatorError);  // (every rank alike)
+}
+
 BOOST_AUTO_TEST_SUITE_END()
