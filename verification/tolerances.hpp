@@ -535,6 +535,12 @@ constexpr double distributed_positions = 0;
 // difference over its largest value: the states are bitwise the same, the ranks' partial sums
 // are added in another order (rounding, ~1e-16 per term of a sum over ~600 particles); 1e-12.
 constexpr double distributed_series = 1e-12;
+// The mill study over ranks (test_mill_run.cpp): its one revolution after the first at full
+// speed, the energy method against the torque method. Not the steady-state goal (2%,
+// power_methods_agree): the charge is still settling after a 0.5 s ramp, so the two differ by the
+// charge's energy change over that revolution; measured 1.0% (458.4 vs 453.7 W, 2026-12), 15% only
+// says the powers are of one and the same drive.
+constexpr double mill_power_methods_settling = 0.15;
 // A surface speed bound against its closed form (omega times a distance, a few operations in
 // double): rounding only, ~1e-16 relative.
 constexpr double surface_speed_closed_form = 1e-12;

@@ -9,8 +9,9 @@
 //   method (the drum's work), by the energy method and its split by contact class, the thesis's
 //   estimate and the energies, each within 1e-12 of its column's largest value (the ranks' partial
 //   sums are added in another order than one rank's);
-// - the drum does work on the charge (power > 0) and the two methods agree to 15% (its second
-//   revolution after a 0.5 s ramp: not yet steady; the study's own tests hold the balance).
+// - the drum does work on the charge (power > 0) and the two methods agree to
+//   tol::mill_power_methods_settling (the second revolution after a 0.5 s ramp is not yet steady;
+//   the energy-ledger suite holds the balance at steady state).
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -83,7 +84,7 @@ BOOST_AUTO_TEST_CASE(the_mill_power_over_ranks_is_the_one_rank_power) {
                                     << worst_name << ")");
   BOOST_TEST(exact_wrong == 0);
   BOOST_TEST(torque > 0);
-  BOOST_TEST(std::fabs(energy - torque) < 0.15 * torque);
+  BOOST_TEST(std::fabs(energy - torque) < tol::mill_power_methods_settling * torque);
   check_at_most({kCase, "the lab mill's power per revolution over ranks against one rank: worst column, of its largest value, " + ranks,
                  "-", "the ranks' sums in another order"},
                 worst, tol::distributed_series);
