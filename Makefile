@@ -109,9 +109,10 @@ $(BUILD)/mpi/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi/%.o) $(HOST_OBJ)
 # blaze run over ranks (mpirun -np N build/mpi/blaze run SCENE.toml; apps/blaze/run_scene.hpp).
 $(BUILD)/mpi/blaze: $(BLAZE_SRC:%.cpp=$(BUILD)/mpi/%.o) $(HOST_OBJ)
 	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@
-# The mill study over ranks (mpirun -np N build/mpi/study_mill SCENE.toml; studies/mill/mill_run.hpp).
-$(BUILD)/mpi/study_mill: $(BUILD)/mpi/studies/mill/main.o $(HOST_OBJ)
-	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@
+# The mill and hopper studies over ranks (mpirun -np N build/mpi/study_mill SCENE.toml;
+# studies/mill/mill_run.hpp, studies/hopper/hopper_run.hpp).
+$(BUILD)/mpi/study_%: $(BUILD)/mpi/studies/%/main.o $(HOST_OBJ)
+	$(MPICXX) $(LDFLAGS_cpu) $^ -o $@ $(PLOT_LIBS)
 # The same suite on the CUDA backend (ranks sharing the GPUs; the GPU machine's header-only
 # Boost.Test): MPI's flags from mpicxx, or MPI_DIR=<prefix with include/ and lib/>.
 MPI_DIR ?=
@@ -122,12 +123,15 @@ $(BUILD)/mpi-cuda/%.o: %.cpp $(HEADERS)
 	$(NVCC) $(NVCCFLAGS) -x cu -DBLAZE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 $(MPI_INC) -c $< -o $@
 $(BUILD)/mpi-cuda/blaze_mpi_tests: $(MPI_TEST_SRC:%.cpp=$(BUILD)/mpi-cuda/%.o) $(HOST_OBJ)
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp,-pthread $^ -o $@ $(MPI_LIB)
+# blaze run over ranks on the GPUs (mpirun -np N build/mpi-cuda/blaze run SCENE.toml).
+$(BUILD)/mpi-cuda/blaze: $(BLAZE_SRC:%.cpp=$(BUILD)/mpi-cuda/%.o) $(HOST_OBJ)
+	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp,-pthread $^ -o $@ $(MPI_LIB)
 $(BUILD)/cpu/blaze_bench: $(BUILD)/cpu/bench/bench.o
 	$(CXX) $(LDFLAGS_cpu) $^ -o $@
 $(BUILD)/cuda/blaze_bench: $(BUILD)/cuda/bench/bench.o
 	$(NVCC) -arch=$(CUDA_ARCH) -Xcompiler -fopenmp $^ -o $@
 
-build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze $(BUILD)/mpi/blaze_mpi_tests $(BUILD)/mpi/apps/blaze/main.o $(BUILD)/mpi/study_mill
+build-cpu: $(BUILD)/cpu/blaze_tests $(STUDIES:%=$(BUILD)/cpu/study_%) $(BUILD)/cpu/blaze_bench $(BUILD)/cpu/blaze $(BUILD)/mpi/blaze_mpi_tests $(BUILD)/mpi/apps/blaze/main.o $(BUILD)/mpi/study_mill $(BUILD)/mpi/study_hopper
 build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD)/cuda/blaze_bench $(BUILD)/cuda/blaze
 
 # Compile (not run) the CUDA build so GPU code cannot rot unseen.
