@@ -44,11 +44,16 @@ class DischargeRecord {
  public:
   static constexpr double kNever = std::numeric_limits<double>::infinity();
 
-  // At the opening: the bed as it is (x measured from `axis_x`, the orifice's centre line).
+  // At the opening: the bed as it is (x measured from `axis_x`, the orifice's centre line), kept
+  // in id order, so that the record (its sums, its CSV) does not depend on the state's order (one
+  // process's store order, or the run over ranks gathered in id order).
   template <class Real>
   void open(const ParticleState<Real>& st, double axis_x, double orifice_half_width = 0) {
     axis_ = axis_x, orifice_ = orifice_half_width;
-    for (std::size_t i = 0; i < st.size(); ++i) {
+    std::vector<std::size_t> order(st.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return st.id[a] < st.id[b]; });
+    for (std::size_t i : order) {
       index_[static_cast<std::int64_t>(st.id[i])] = entries_.size();
       entries_.push_back({static_cast<std::int64_t>(st.id[i]), vec_cast<double>(st.position[i]), static_cast<double>(st.mass[i]), kNever});
     }

@@ -1,8 +1,11 @@
-// What the MPI suite's program runs share (test_blaze_run.cpp, test_mill_run.cpp): a folder for a
-// case's runs and the rows of a CSV file they wrote.
+// What the MPI suite's program runs share (test_blaze_run.cpp, test_mill_run.cpp,
+// test_hopper_run.cpp): a folder for a case's runs, the rows of a CSV file they wrote, and two
+// runs' series compared column by column.
 #pragma once
 #include <stdlib.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -39,6 +42,38 @@ inline std::vector<std::vector<double>> csv_rows(const std::string& path, std::v
     if (!first) rows.push_back(row);
   }
   return rows;
+}
+
+// A run's CSV series (a) against another's (b): the same header and rows; the `exact` columns
+// (counts, times, ids) equal cell by cell; every other cell's difference relative to its column's
+// largest magnitude in b, the worst of them named.
+struct SeriesComparison {
+  bool same_shape = false;
+  long exact_wrong = 0;
+  double worst = 0;
+  std::string worst_name;
+};
+inline SeriesComparison compare_series(const std::vector<std::string>& ha, const std::vector<std::vector<double>>& ra,
+                                       const std::vector<std::string>& hb, const std::vector<std::vector<double>>& rb,
+                                       const std::vector<std::string>& exact) {
+  SeriesComparison c;
+  c.same_shape = ha == hb && ra.size() == rb.size();
+  for (std::size_t r = 0; r < std::min(ra.size(), rb.size()); ++r) {
+    c.same_shape = c.same_shape && ra[r].size() == rb[r].size();
+    for (std::size_t k = 0; k < std::min(ra[r].size(), rb[r].size()); ++k) {
+      const std::string& name = k < hb.size() ? hb[k] : std::string("?");
+      if (std::find(exact.begin(), exact.end(), name) != exact.end()) {
+        c.exact_wrong += ra[r][k] != rb[r][k];
+        continue;
+      }
+      double scale = 0;
+      for (const auto& row : rb)
+        if (k < row.size()) scale = std::fmax(scale, std::fabs(row[k]));
+      const double d = scale > 0 ? std::fabs(ra[r][k] - rb[r][k]) / scale : std::fabs(ra[r][k] - rb[r][k]);
+      if (d > c.worst) c.worst = d, c.worst_name = name;
+    }
+  }
+  return c;
 }
 
 }  // namespace blaze::test
