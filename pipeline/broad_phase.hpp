@@ -39,9 +39,11 @@ class BroadPhase {
   std::uint64_t builds() const { return builds_; }
 
   // 0: the neighbour list is valid; 1: it must be rebuilt; 2: some particle's position is not finite.
-  int rebuild_check(ParticleStore<Real, Space>& store) {
+  // `fresh`: the store was replaced since the last build (Simulation::reload), so the reference
+  // positions are not its particles' (nor as many): only finiteness is checked (1 or 2).
+  int rebuild_check(ParticleStore<Real, Space>& store, bool fresh = false) {
     auto p = store.view();
-    const Real h = Real(0.5) * skin_, h2 = builds_ == 0 ? Real(-1) : h * h;
+    const Real h = Real(0.5) * skin_, h2 = builds_ == 0 || fresh ? Real(-1) : h * h;
     const int code = reduce_max(Space{}, p.n,
                                 NeedsRebuild<Real>{grid_, p.position, field(reference_), h2}, 0);
     return builds_ == 0 && code == 0 ? 1 : code;

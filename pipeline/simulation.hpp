@@ -653,7 +653,7 @@ class Simulation {
   // rebuild the same list).
   void first_build() {
     ++reorders_;
-    if (broad_.rebuild_check(store_) == 2) throw_non_finite(steps_);
+    if (broad_.rebuild_check(store_, true) == 2) throw_non_finite(steps_);
     apply_removal(broad_.rebuild(store_, timer_, params_.gravity));
     build_world_lists();
     contacts_.clear(broad_.neighbours(), store_.size());

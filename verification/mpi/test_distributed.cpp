@@ -14,6 +14,7 @@
 //   1 000 steps positions and orientations bitwise one process's. (Without canonical order the
 //   ranks' sums round differently, and the cubes' contacts, switching features on differences of
 //   rounding size, part the runs by 1e-3 r by step 800.)
+// - A run that starts empty and is fed two batches of that bed: bitwise one process fed alike.
 // - Particles cross the boxes' faces, edges and corners as the bed falls and spreads (bisection
 //   on 4 ranks: four boxes meet along a vertical edge) and the ghosts are refreshed every step.
 #include <boost/test/unit_test.hpp>
@@ -183,6 +184,51 @@ BOOST_AUTO_TEST_CASE(a_settling_bed_over_ranks_moves_as_in_one_process) {
   BOOST_TEST(many.total() == static_cast<long>(start.size()));  // none escaped the box
   BOOST_TEST(one.state().size() == start.size());
   BOOST_TEST(worst_v == 0.0);
+}
+
+// A run that starts with no particles and takes them in batches (a scene of feeds alone, as the
+// thesis's hoppers are filled): every rank's Simulation starts empty, and the first batch reloads
+// a store larger than the one its broad phase last built (a reference position per particle it
+// never had: the defect this case found, a null read on the CPU). Two batches of the settling
+// bed's spheres, 150 steps apart, then 300 steps: bitwise one process fed alike.
+BOOST_AUTO_TEST_CASE(a_run_that_starts_empty_and_is_fed_moves_as_in_one_process) {
+  const Communicator comm;
+  const double r = kBedRadius, half = kBoxHalf;
+  const Law law = bed_law();
+  SimulationParams<double> prm = bed_params(r, half);
+  const ParticleState<double> bed = falling_bed(r);
+  double r_max = 0;
+  for (double q : bed.radius) r_max = std::fmax(r_max, q);
+  prm.max_radius = r_max;  // (no particle at the start to size the grid by)
+  const auto batch = [&](std::size_t from, std::size_t to) {
+    ParticleState<double> b;
+    for (std::size_t k = from; k < to; ++k) b.add_sphere(bed.position[k], bed.radius[k], 2500, 0), b.velocity.back() = bed.velocity[k];
+    return b;
+  };
+  const World<double> world = open_box(half);
+  Sim one(prm, one_law(law), world, ParticleState<double>{});
+  DistributedSimulation<Sim> many(comm, prm, one_law(law), world, ParticleState<double>{}, SphereShape{});
+  const std::size_t half_bed = bed.size() / 2;
+  one.insert(batch(0, half_bed)), many.insert(batch(0, half_bed));
+  one.run(150), many.run(150);
+  one.insert(batch(half_bed, bed.size())), many.insert(batch(half_bed, bed.size()));
+  one.run(300), many.run(300);
+  const ParticleState<double> ref = one.state();
+  const auto got = gather_owned(comm, many.owned_state());
+  double worst_x = 0;
+  long missing = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    const auto it = got.find(ref.id[k]);
+    if (it == got.end()) ++missing;
+    else worst_x = std::fmax(worst_x, norm(it->second.first - vec_cast<double>(ref.position[k])) / r);
+  }
+  BOOST_TEST_MESSAGE("fed from empty" << ranks_label(comm) << ": " << got.size() << " particles, worst |dx| / r " << worst_x);
+  BOOST_TEST(ref.size() == bed.size());
+  BOOST_TEST(got.size() == ref.size());
+  BOOST_TEST(missing == 0);
+  check_at_most({kCase, "max |x - x_one| / r, 10 000 spheres fed in two batches into an empty run, 450 steps" + ranks_label(comm), "-",
+                 "canonical order: bitwise"},
+                worst_x, tol::distributed_positions);
 }
 
 BOOST_AUTO_TEST_CASE(a_bed_of_cubes_over_ranks_moves_as_in_one_process) {
