@@ -173,6 +173,21 @@ class MpiSession {
 };
 #endif
 
+// A study program's ranks (study_mill, study_hopper): in an MPI build MPI is started (finalised
+// when the program ends), ranks other than 0 print nothing on stdout (one voice; errors still reach
+// stderr) and rank 0 says how many run; in a build without MPI none (one process, no Communicator).
+inline const Communicator* study_ranks([[maybe_unused]] int* argc, [[maybe_unused]] char*** argv, [[maybe_unused]] const char* program) {
+#if BLAZE_MPI
+  static MpiSession mpi(argc, argv);
+  static const Communicator world;
+  if (world.rank() != 0 && !std::freopen("/dev/null", "w", stdout)) throw CommunicatorError("cannot silence rank " + std::to_string(world.rank()));
+  if (world.size() > 1) std::printf("%s: over %d ranks (MPI)\n", program, world.size());
+  return &world;
+#else
+  return nullptr;
+#endif
+}
+
 // For a program's error report: "rank K: " when it runs over several ranks, else "".
 inline std::string rank_label() {
 #if BLAZE_MPI

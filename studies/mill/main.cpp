@@ -41,14 +41,7 @@ int dispatch_float(const Scene& s, const Communicator* c) {
 
 int main(int argc, char** argv) try {
   blaze::line_buffered_output();
-  const Communicator* comm = nullptr;  // an MPI build: its ranks (one voice: rank 0 prints)
-#if defined(BLAZE_MPI)
-  static MpiSession mpi(&argc, &argv);
-  static const Communicator world;
-  comm = &world;
-  if (world.rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;
-  if (world.size() > 1) std::printf("study_mill: over %d ranks (MPI)\n", world.size());
-#endif
+  const Communicator* comm = study_ranks(&argc, &argv, "study_mill");  // an MPI build: its ranks (rank 0 prints)
   std::string path = "studies/mill/lab_mill.toml";
   std::vector<std::string> overrides;
   for (int k = 1; k < argc; ++k) {
