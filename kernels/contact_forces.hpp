@@ -17,6 +17,11 @@
 #include "kernels/contact_history.hpp"
 #include "kernels/contact_pair.hpp"
 
+// Lever (bench/results/levers): 1 reads j's whole side (pair_side) before the collision.
+#ifndef BLAZE_PAIR_EARLY_SIDE
+#define BLAZE_PAIR_EARLY_SIDE 0
+#endif
+
 namespace blaze {
 
 template <class Shape, class Law, class Kinematics, class Features>
@@ -40,7 +45,14 @@ struct ContactForces {
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       const std::size_t s = list.offset(k, i);
+      constexpr bool kEarly = Law::kHistory && BLAZE_HISTORY_EARLY_LOAD;  // contact_history.hpp
+      auto state = kEarly ? history.load(s) : typename Law::State{};
+#if BLAZE_PAIR_EARLY_SIDE
+      auto sj = pair_side<Features>(shape, p, j);  // j's kinematics beside its position (contact_pair.hpp)
+      auto& bj = sj.body;
+#else
       auto bj = shape.body(p, j);
+#endif
       auto a = side;
       images.place(s, i, j, a.body.x, bj.x);
       decltype(shape.collide(a.body, bj)) g;  // ContactGeometry, or PatchGeometry (contact_patch.hpp)
@@ -51,12 +63,17 @@ struct ContactForces {
         g.normal = -g.normal;
       }
       if (!g.touching) {
-        if constexpr (Law::kHistory) history.forget(s);
+        if constexpr (kEarly) history.forget(s, state);
+        else if constexpr (Law::kHistory) history.forget(s);
         continue;
       }
       sums.touch(g.kind == ContactKind::edge_edge, g.overlap);
-      auto state = Law::kHistory ? history.load(s) : typename Law::State{};
+      if constexpr (Law::kHistory && !kEarly) state = history.load(s);
+#if BLAZE_PAIR_EARLY_SIDE
+      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, sj, g, state, dt);
+#else
       const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
+#endif
       if constexpr (Law::kHistory) history.store(s, state);
       sums.template add<has_moment_v<Law, decltype(g)>>(c, g.point - a.body.x);
       if constexpr (Features::thesis_power)  // the pair is booked from both sides: half each

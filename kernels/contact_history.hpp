@@ -36,6 +36,14 @@ namespace blaze {
 #ifndef BLAZE_HISTORY_WALL_MIN_BLOCKS
 #define BLAZE_HISTORY_WALL_MIN_BLOCKS 4
 #endif
+// A pair's state is loaded at the top of its list entry's iteration, before the collision: its
+// address depends on the entry alone, so its memory latency overlaps that of the partner's
+// position instead of following the collision's (the contact kernel is latency-bound). The entries
+// that do not touch (a few in a dense bed) read their state anyway: forget() needs it. 0: loaded
+// after the collision, for touching entries only (the lever's baseline).
+#ifndef BLAZE_HISTORY_EARLY_LOAD
+#define BLAZE_HISTORY_EARLY_LOAD 1
+#endif
 template <class Law>
 constexpr int history_min_blocks(int shape_blocks, int history_blocks) {
   return Law::kHistory && history_blocks > shape_blocks ? history_blocks : shape_blocks;
@@ -56,9 +64,11 @@ struct PairHistoryView {
     for (int c = 0; c < used; ++c) field[c][s] = st.value[c];
   }
   // The contact is open: forget its state (written only when it holds one).
-  BLAZE_HD void forget(std::size_t s) const {
+  BLAZE_HD void forget(std::size_t s) const { forget(s, load(s)); }
+  // The same, given the state already loaded from s.
+  BLAZE_HD void forget(std::size_t s, const State& st) const {
     bool held = false;
-    for (int c = 0; c < used; ++c) held = held || field[c][s] != Real(0);
+    for (int c = 0; c < used; ++c) held = held || st.value[c] != Real(0);
     if (held)
       for (int c = 0; c < used; ++c) field[c][s] = Real(0);
   }

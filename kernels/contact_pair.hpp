@@ -74,6 +74,27 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
   }
 }
 
+// The same with j's side read up front (PairSide, with its body), so that j's velocity, spin, mass
+// and material are loaded beside its position rather than after the collision: one memory latency
+// fewer per list entry, for 8 more registers live across the collision (BLAZE_PAIR_EARLY_SIDE,
+// contact_forces.hpp). The arithmetic is pair_force's.
+template <class Kinematics, class Features, class Law, class Real, class Body, class Geometry>
+BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
+                                              const PairSide<Real, Body>& a, const PairSide<Real, Body>& b, const Geometry& g,
+                                              typename Law::State& state, Real dt) {
+  const Real m_eff = Real(1) / (a.inv_mass + b.inv_mass);
+  if constexpr (is_patch_geometry_v<Geometry>) {
+    const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(a.v, a.w, x - a.body.x, b.v, b.w, x - b.body.x); };
+    return contact_patch_force(laws(a.material, b.material), g, v_rel, a.w - b.w, m_eff, state, dt);
+  } else {
+    const Vec3<Real> v_rel = Kinematics::relative(a.v, a.w, g.point - a.body.x, b.v, b.w, g.point - b.body.x);
+    ContactMotion<Real> m{v_rel, a.w - b.w, m_eff};
+    if constexpr (Law::kRolling)
+      m.inv_rolling_inertia = rolling_term(p, a.body.index, g.point - a.body.x) + rolling_term(p, b.body.index, g.point - b.body.x);
+    return laws(a.material, b.material).evaluate(g, m, state, dt);
+  }
+}
+
 // F on particle i (and a moment on i) from its contact g with a world object standing at `pose`
 // (null: still; blaze/world/motion.hpp), whose material law is `law`: the wall's velocity at the
 // point enters v_rel and its spin the relative spin; the wall's mass is infinite (m_eff = m_i, and

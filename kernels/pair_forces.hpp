@@ -61,17 +61,20 @@ struct PairForces {
       const Index j = list.at(k, i);
       if (j < i) continue;  // j's kernel thread evaluates this pair
       const std::size_t s = list.offset(k, i);
+      constexpr bool kEarly = Law::kHistory && BLAZE_HISTORY_EARLY_LOAD;  // contact_history.hpp
+      auto state = kEarly ? history.load(s) : typename Law::State{};
       auto bj = shape.body(p, j);
       if (images.on()) bj.x = bj.x + images.shift(s);
       const auto g = shape.collide(a.body, bj);
       if (!g.touching) {
         slots.state[s] = 0;
-        if constexpr (Law::kHistory) history.forget(s);
+        if constexpr (kEarly) history.forget(s, state);
+        else if constexpr (Law::kHistory) history.forget(s);
         continue;
       }
       slots.state[s] = g.kind == ContactKind::edge_edge ? 2 : 1;
       if constexpr (Features::monitor) slots.overlap[s] = g.overlap;
-      auto state = Law::kHistory ? history.load(s) : typename Law::State{};
+      if constexpr (Law::kHistory && !kEarly) state = history.load(s);
       const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
       if constexpr (Law::kHistory) history.store(s, state);
       slots.set(slots.force, s, c.force);
