@@ -17,9 +17,15 @@
 #include "kernels/contact_history.hpp"
 #include "kernels/contact_pair.hpp"
 
-// Lever (bench/results/levers): 1 reads j's whole side (pair_side) before the collision.
+// j's side (velocity, spin, mass, material) read with its position, before the collision
+// (pair_side; contact_pair.hpp): one memory latency fewer per list entry for 6-10 more registers.
+// 1 (default): for the laws with history of shapes that ask for it (SphereShape::kEarlySide);
+// 2: for every law of those shapes; 0: never. H100, 1e7 spheres in float, dense bed, contacts per
+// step (bench/results/levers/early-loads.md): Mindlin 3.44 -> 3.26 ms, Mindlin + EPSD 5.93 ->
+// 5.82, linear 1.58 -> 1.38, linear double 3.32 -> 2.75, but Hertz 1.66 -> 1.86 (68 registers: a
+// block fewer per SM), so history-free laws keep the late loads until each is measured.
 #ifndef BLAZE_PAIR_EARLY_SIDE
-#define BLAZE_PAIR_EARLY_SIDE 0
+#define BLAZE_PAIR_EARLY_SIDE 1
 #endif
 
 namespace blaze {
@@ -37,6 +43,7 @@ struct ContactForces {
   Real dt;
   PeriodicImages<Real> images;  // periodic axes: the pair in its lower index's frame (periodic_images.hpp)
   bool by_id = false;           // the lower of a pair by permanent id, not by index
+  static constexpr bool kSide = early_side_v<Shape> && (BLAZE_PAIR_EARLY_SIDE == 2 || (BLAZE_PAIR_EARLY_SIDE == 1 && Law::kHistory));
 
   BLAZE_HD void operator()(Index i) const {
     const auto side = pair_side<Features>(shape, p, i);
@@ -47,12 +54,8 @@ struct ContactForces {
       const std::size_t s = list.offset(k, i);
       constexpr bool kEarly = Law::kHistory && BLAZE_HISTORY_EARLY_LOAD;  // contact_history.hpp
       auto state = kEarly ? history.load(s) : typename Law::State{};
-#if BLAZE_PAIR_EARLY_SIDE
-      auto sj = pair_side<Features>(shape, p, j);  // j's kinematics beside its position (contact_pair.hpp)
-      auto& bj = sj.body;
-#else
-      auto bj = shape.body(p, j);
-#endif
+      auto sj = other_side<kSide, Features>(shape, p, j);  // j's body, or its whole side (contact_pair.hpp)
+      auto& bj = body_of(sj);
       auto a = side;
       images.place(s, i, j, a.body.x, bj.x);
       decltype(shape.collide(a.body, bj)) g;  // ContactGeometry, or PatchGeometry (contact_patch.hpp)
@@ -69,11 +72,7 @@ struct ContactForces {
       }
       sums.touch(g.kind == ContactKind::edge_edge, g.overlap);
       if constexpr (Law::kHistory && !kEarly) state = history.load(s);
-#if BLAZE_PAIR_EARLY_SIDE
-      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, sj, g, state, dt);
-#else
-      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
-#endif
+      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, sj, g, state, dt);
       if constexpr (Law::kHistory) history.store(s, state);
       sums.template add<has_moment_v<Law, decltype(g)>>(c, g.point - a.body.x);
       if constexpr (Features::thesis_power)  // the pair is booked from both sides: half each

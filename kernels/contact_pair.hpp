@@ -10,6 +10,7 @@
 // law at each of its points and adds the patch's moment about p:
 //   T_i  += (p - x_i) x F_ij + M_ij,   M_ij = sum_k (p_k - p) x F_k     [N m]
 #pragma once
+#include <type_traits>
 #include "blaze/contact/contact_patch.hpp"
 #include "blaze/contact/kinematics.hpp"
 #include "blaze/laws/contact_law.hpp"
@@ -74,14 +75,13 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
   }
 }
 
-// The same with j's side read up front (PairSide, with its body), so that j's velocity, spin, mass
-// and material are loaded beside its position rather than after the collision: one memory latency
-// fewer per list entry, for 8 more registers live across the collision (BLAZE_PAIR_EARLY_SIDE,
-// contact_forces.hpp). The arithmetic is pair_force's.
+// The same with j's side read up front (PairSide, with its body: other_side<true>), so that j's
+// velocity, spin, mass and material are loaded beside its position rather than after the
+// collision (contact_forces.hpp, BLAZE_PAIR_EARLY_SIDE). The arithmetic is the other overload's.
 template <class Kinematics, class Features, class Law, class Real, class Body, class Geometry>
 BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const ParticleView<Real>& p,
-                                              const PairSide<Real, Body>& a, const PairSide<Real, Body>& b, const Geometry& g,
-                                              typename Law::State& state, Real dt) {
+                                              const PairSide<Real, Body>& a, Index, const PairSide<Real, Body>& b,
+                                              const Geometry& g, typename Law::State& state, Real dt) {
   const Real m_eff = Real(1) / (a.inv_mass + b.inv_mass);
   if constexpr (is_patch_geometry_v<Geometry>) {
     const auto v_rel = [&](const Vec3<Real>& x) { return Kinematics::relative(a.v, a.w, x - a.body.x, b.v, b.w, x - b.body.x); };
@@ -94,6 +94,25 @@ BLAZE_HD_INLINE ContactForce<Real> pair_force(const PairTable<Law>& laws, const 
     return laws(a.material, b.material).evaluate(g, m, state, dt);
   }
 }
+
+// Does a shape ask for its partner's whole side before the collision (Shape::kEarlySide)?
+template <class Shape, class = void>
+struct EarlySide : std::false_type {};
+template <class Shape>
+struct EarlySide<Shape, std::void_t<decltype(Shape::kEarlySide)>> : std::bool_constant<Shape::kEarlySide> {};
+template <class Shape>
+inline constexpr bool early_side_v = EarlySide<Shape>::value;
+
+// j as a pair's other side: its whole side (Side), or its body alone; body_of gives the body.
+template <bool Side, class Features, class Shape, class Real>
+BLAZE_HD_INLINE auto other_side(const Shape& shape, const ParticleView<Real>& p, Index j) {
+  if constexpr (Side) return pair_side<Features>(shape, p, j);
+  else return shape.body(p, j);
+}
+template <class Real, class Body>
+BLAZE_HD_INLINE Body& body_of(PairSide<Real, Body>& s) { return s.body; }
+template <class Body>
+BLAZE_HD_INLINE Body& body_of(Body& b) { return b; }
 
 // F on particle i (and a moment on i) from its contact g with a world object standing at `pose`
 // (null: still; blaze/world/motion.hpp), whose material law is `law`: the wall's velocity at the
