@@ -210,18 +210,18 @@ class Simulation {
   // still needed); benchmarks time the broad phase with it.
   void rebuild_neighbours() { rebuild(true); }
 
-  // One step. Small systems (fused()) take it through the same one-launch kernel that batches use,
-  // so a trajectory is bitwise the same however its steps were grouped (on the GPU, the fused
-  // kernel and the per-phase kernels may round differently: the compiler contracts a*b + c into
-  // FMAs per kernel).
+  // One step. Unless the phase timer is on (batched()), it goes through the same batch that run()
+  // uses, so a trajectory is bitwise the same however its steps were grouped (on the GPU, the
+  // batch's kernels and the per-phase kernels that finish a step after a rebuild may round
+  // differently: the compiler contracts a*b + c into FMAs per kernel).
   void step() {
-    if (fused()) return run_batched(1);
+    if (batched()) return run_batched(1);
     finish_step(0);
   }
   // `steps` steps; bitwise the same as calling step() that many times (with the phase timer in the
-  // same state). Small systems (fused()) run them in batches (run_batched).
+  // same state): in batches (run_batched) unless the phase timer is on.
   void run(std::uint64_t steps) {
-    if (fused()) return run_batched(steps);
+    if (batched()) return run_batched(steps);
     for (std::uint64_t s = 0; s < steps; ++s) step();
   }
   // ---- A step in parts, for the distributed driver (pipeline/parallel/distributed_simulation.hpp,
@@ -278,10 +278,10 @@ class Simulation {
     store_.upload_rows(rows_which_.data(), static_cast<Index>(which.size()), in);
   }
 
-  // Steps of small systems run as one launch per batch (phases.hpp), unless the phase timer is on
-  // (the phases are then timed one by one). Larger systems take one launch per phase and one host
-  // round trip per step (the rebuild check), a small share of their step.
-  bool fused() const { return store_.size() <= kFusedMaxParticles && !timer_.enabled; }
+  // Steps run in batches with one host round trip per batch (run_batched; phases.hpp: on the GPU
+  // one launch per batch for small systems, the phases queued for larger ones), unless the phase
+  // timer is on (the phases are then timed one by one, with a round trip per step).
+  bool batched() const { return !timer_.enabled; }
 
   ParticleState<Real> state() const { return state_of(store_); }
   // Periodic axes: the unwrapped positions x + image L (m) of `s`, which is state() now (grid/
@@ -621,7 +621,8 @@ class Simulation {
     }
   }
 
-  // A batch of K steps in one launch with no host round trip per step (phases.hpp): the batch
+  // A batch of K steps with no host round trip per step (phases.hpp: one launch, or the phases
+  // queued; on the host, the phases step after step): the batch
   // stops at the first step whose check is set (it needs a rebuild, or found a non-finite
   // position), just after that check; the flags are read once. That step is then finished as
   // step() would. K doubles after a clean batch up to kMaxBatch and falls to the steps a rebuild

@@ -3,6 +3,8 @@
 // On every build: the host backend is deterministic, bitwise, whatever the thread count (no
 // atomics, fixed summation order), which is what makes the CPU-GPU comparison meaningful.
 #include <boost/test/unit_test.hpp>
+#include <boost/test/data/test_case.hpp>
+#include <boost/test/data/monomorphic.hpp>
 #include <algorithm>
 #include <type_traits>
 #if defined(_OPENMP)
@@ -12,6 +14,7 @@
 
 using namespace blaze;
 using namespace blaze::test;
+namespace bdata = boost::unit_test::data;
 
 namespace {
 
@@ -75,15 +78,19 @@ bool bitwise_equal(const ParticleState<double>& a, const ParticleState<double>& 
   return same;
 }
 
-// Small systems run batches of steps in one launch (exec/phases.hpp), stopping at a step that
-// needs a rebuild: the trajectory is bitwise that of single steps, through a loose bed's frequent
-// rebuilds. On the host it is also bitwise that of one launch per phase (the phase timer's path;
-// on the GPU the two compiled kernels may contract a*b + c into FMAs differently).
-BOOST_AUTO_TEST_CASE(batched_steps_equal_single_steps) {
+// Steps run in batches (exec/phases.hpp: on the GPU one launch per batch for small systems, the
+// phases queued behind a stop flag for larger ones), stopping at a step that needs a rebuild: the
+// trajectory is bitwise that of single steps, through a loose bed's frequent rebuilds, on both
+// sides of kFusedMaxParticles. On the host it is also bitwise that of one launch per phase (the
+// phase timer's path; on the GPU the two compiled kernels may contract a*b + c into FMAs
+// differently).
+BOOST_DATA_TEST_CASE(batched_steps_equal_single_steps, bdata::make({1000, 6000}), n) {
+  static_assert(kFusedMaxParticles > 1000 && kFusedMaxParticles < 6000, "one bed on each side of the one-launch size");
+  const int steps = 3000;
   std::uint64_t builds_run = 0, builds_single = 0, builds_phases = 0;
-  const auto run = run_packing<DefaultSpace>(1000, 3000, &builds_run, Stepping::run);
-  const auto single = run_packing<DefaultSpace>(1000, 3000, &builds_single, Stepping::single);
-  const auto phases = run_packing<DefaultSpace>(1000, 3000, &builds_phases, Stepping::per_phase);
+  const auto run = run_packing<DefaultSpace>(n, steps, &builds_run, Stepping::run);
+  const auto single = run_packing<DefaultSpace>(n, steps, &builds_single, Stepping::single);
+  const auto phases = run_packing<DefaultSpace>(n, steps, &builds_phases, Stepping::per_phase);
   BOOST_TEST(builds_run > 10u);  // rebuilds fall inside batches
   BOOST_TEST(builds_run == builds_single);
   BOOST_TEST(bitwise_equal(run, single));

@@ -10,12 +10,19 @@
 //
 // fused_steps(space, n, k, phases, flags): up to k steps; flags[s] = 0 for a step that ran to the
 // end, else check_flag(index of the check that stopped it, its code), and the batch ends there
-// (just after that check), so the caller finishes that step from the next phase on. Cuda: one
-// block runs all k steps, the phases separated by __syncthreads(); no launch and no host round
-// trip per step, which is what a step of a few hundred particles costs otherwise (issue 6: the
-// 242-ball mill). Host: the per-phase runner, step after step.
+// (just after that check), so the caller finishes that step from the next phase on. Cuda, up to
+// kFusedMaxParticles: one block runs all k steps, the phases separated by __syncthreads(); no
+// launch and no host round trip per step, which is what a step of a few hundred particles costs
+// otherwise (issue 6: the 242-ball mill). Cuda, larger: the k steps' phases are queued as one
+// launch each, with no host round trip between them (queued_steps): a check reduces into device
+// memory and, when it stops the step, raises a stop flag that every later kernel of the batch
+// reads first and returns on. Otherwise the host waited for each step's rebuild check before it
+// launched the step's force phases (a sync per step: a third of the Los Bronces mill's step at
+// 1.4e5 particles). Host: the per-phase runner, step after step.
 #pragma once
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <type_traits>
 #include "blaze/exec/launch.hpp"
 #include "blaze/exec/primitives.hpp"
@@ -148,6 +155,60 @@ __global__ void __launch_bounds__(kFusedBlockSize) fused_steps_kernel(Index n, s
   }
 }
 
+// A phase of a queued batch: nothing once the batch has stopped (*stop != 0); the kernel keeps
+// the phase's own launch bounds.
+template <class F>
+struct UnlessStopped {
+  static constexpr int kMinBlocks = min_blocks_v<F>;
+  F f;
+  const int* stop;
+  __device__ void operator()(Index i) const {
+    if (*stop == 0) f(i);
+  }
+};
+// A check of a queued batch: max of f(i) into *code (zero before), unless stopped.
+template <class F>
+__global__ void queued_check_kernel(Index n, F f, const int* stop, int* code) {
+  if (*stop != 0) return;
+  int v = 0;
+  for (Index i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += gridDim.x * blockDim.x) v = max(v, f(i));
+  for (int o = 16; o > 0; o /= 2) v = max(v, __shfl_down_sync(0xffffffffu, v, o));
+  if ((threadIdx.x & 31) == 0 && v != 0) atomicMax(code, v);
+}
+// After a check: a nonzero code stops the batch at this step (its flag written); code back to 0.
+template <int = 0>
+__global__ void queued_settle_kernel(int* stop, int* code, int* flag, int index) {
+  if (*stop == 0 && *code != 0) {
+    *flag = check_flag(index, *code);
+    *stop = 1;
+  }
+  *code = 0;
+}
+
+inline void queued_phases(const Phases<>&, Index, int, int*, int*) {}
+template <class H, class... T>
+void queued_phases(const Phases<H, T...>& p, Index n, int index, int* state, int* flag) {
+  if constexpr (is_check_phase<H>::value) {
+    const int blocks = static_cast<int>(std::min<Index>((n + kBlockSize - 1) / kBlockSize, 4096));
+    queued_check_kernel<<<blocks, kBlockSize>>>(n, p.head.f, state, state + 1);
+    cuda_check(cudaGetLastError(), "queued check launch");
+    queued_settle_kernel<<<1, 1>>>(state, state + 1, flag, index);
+    cuda_check(cudaGetLastError(), "queued settle launch");
+  } else if (p.head.enabled) {
+    for_each(Cuda{}, n, UnlessStopped<decltype(p.head.f)>{p.head.f, state});
+  }
+  queued_phases(p.tail, n, index + 1, state, flag);
+}
+
+// k steps of a larger system, every phase queued (see the top of this file); flags[s] as
+// fused_steps's (zero before the call).
+template <class... P>
+void queued_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+  static Buffer<int, Cuda> state(2);  // the stop flag and the check's code; one stream
+  cuda_check(cudaMemsetAsync(state.data(), 0, 2 * sizeof(int)), "queued steps reset");
+  for (std::uint64_t s = 0; s < k; ++s) queued_phases(phases, n, 0, state.data(), flags + s);
+}
+
 // The list is read from device memory: with a polyhedron shape table in several phases it
 // exceeds the kernel parameter space.
 template <class... P>
@@ -155,6 +216,21 @@ void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
   using List = Phases<P...>;
   static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
   if (n <= 0 || k == 0) return;
+  if (n > kFusedMaxParticles) {
+    // BLAZE_NO_QUEUED_STEPS set: the lever's baseline (bench/results/levers), a host round trip
+    // per step as before the queue: each step's phases in turn, the check read back.
+    static const bool queue = std::getenv("BLAZE_NO_QUEUED_STEPS") == nullptr;
+    if (queue) return queued_steps(Cuda{}, n, k, phases, flags);
+    Untimed untimed;
+    for (std::uint64_t s = 0; s < k; ++s) {
+      const PhaseStop stop = run_phases(Cuda{}, n, phases, 0, Phases<P...>::size, untimed);
+      if (stop.index < 0) continue;
+      const int flag = check_flag(stop.index, stop.code);
+      copy_n(&flag, 1, flags + s, Host{}, Cuda{});
+      return;
+    }
+    return;
+  }
   static Buffer<List, Cuda> slot(1);  // one per instantiation, kept
   copy_n(&phases, 1, slot.data(), Host{}, Cuda{});
   fused_steps_kernel<<<1, kFusedBlockSize>>>(n, k, slot.data(), flags);
