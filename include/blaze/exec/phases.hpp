@@ -13,12 +13,13 @@
 // (just after that check), so the caller finishes that step from the next phase on. Cuda, up to
 // kFusedMaxParticles: one block runs all k steps, the phases separated by __syncthreads(); no
 // launch and no host round trip per step, which is what a step of a few hundred particles costs
-// otherwise (issue 6: the 242-ball mill). Cuda, larger: the k steps' phases are queued as one
-// launch each, with no host round trip between them (queued_steps): a check reduces into device
-// memory and, when it stops the step, raises a stop flag that every later kernel of the batch
-// reads first and returns on. Otherwise the host waited for each step's rebuild check before it
-// launched the step's force phases (a sync per step: a third of the Los Bronces mill's step at
-// 1.4e5 particles). Host: the per-phase runner, step after step.
+// otherwise (issue 6: the 242-ball mill). Cuda, up to kQueuedMaxParticles: the k steps' phases
+// are queued as one launch each, with no host round trip between them (queued_steps): a check
+// reduces into device memory and, when it stops the step, raises a stop flag that every later
+// kernel of the batch reads first and returns on (the host used to wait for each step's rebuild
+// check before it launched the step's force phases: the queue is 1.09-1.25x on dense beds of 1e5
+// spheres and 1.09x on the Los Bronces mill's 1.4e5, H100). Cuda, larger: the per-phase runner
+// with its round trip per step. Host: the per-phase runner, step after step.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -31,6 +32,13 @@ namespace blaze {
 
 // Up to this many particles the one-block path is used (16 particles per thread at most).
 constexpr Index kFusedMaxParticles = 4096;
+// Up to this many the GPU queues a batch's phases (queued_steps); beyond, a step keeps its host
+// round trip. The round trip is ~20 us, a few % of a step from 1e6 particles up, while every
+// phase queued after a batch's stop still launches its whole grid to return at once (3 900 blocks
+// at 1e6 particles, 39 000 at 1e7: the cost of those launches was not measured). H100: 1e5
+// spheres 1.09-1.25x with the queue, Los Bronces (1.4e5) 1.09x; 1e7 Hertz-Mindlin 1.78e9 queued
+// against 1.82e9 with the round trip (two machines; bench/results/levers/early-loads.md).
+constexpr Index kQueuedMaxParticles = Index(1) << 20;
 
 template <class F>
 struct KernelPhase {
@@ -217,10 +225,11 @@ void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
   static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
   if (n <= 0 || k == 0) return;
   if (n > kFusedMaxParticles) {
-    // BLAZE_NO_QUEUED_STEPS set: the lever's baseline (bench/results/levers), a host round trip
-    // per step as before the queue: each step's phases in turn, the check read back.
+    // Past kQueuedMaxParticles, or with BLAZE_NO_QUEUED_STEPS set (the lever's baseline,
+    // bench/results/levers): a host round trip per step, each step's phases in turn and the check
+    // read back.
     static const bool queue = std::getenv("BLAZE_NO_QUEUED_STEPS") == nullptr;
-    if (queue) return queued_steps(Cuda{}, n, k, phases, flags);
+    if (queue && n <= kQueuedMaxParticles) return queued_steps(Cuda{}, n, k, phases, flags);
     Untimed untimed;
     for (std::uint64_t s = 0; s < k; ++s) {
       const PhaseStop stop = run_phases(Cuda{}, n, phases, 0, Phases<P...>::size, untimed);
