@@ -279,7 +279,7 @@ class Simulation {
   }
 
   // Steps run in batches with one host round trip per batch (run_batched; phases.hpp: on the GPU
-  // one launch per batch for small systems, the phases queued up to 2^20 particles, a round trip
+  // one launch per batch for small systems, the phases queued up to 2^18 particles, a round trip
   // per step beyond), unless the phase timer is on (the phases are then timed one by one, with a
   // round trip per step).
   bool batched() const { return !timer_.enabled; }

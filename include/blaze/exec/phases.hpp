@@ -33,12 +33,12 @@ namespace blaze {
 // Up to this many particles the one-block path is used (16 particles per thread at most).
 constexpr Index kFusedMaxParticles = 4096;
 // Up to this many the GPU queues a batch's phases (queued_steps); beyond, a step keeps its host
-// round trip. The round trip is ~20 us, a few % of a step from 1e6 particles up, while every
-// phase queued after a batch's stop still launches its whole grid to return at once (3 900 blocks
-// at 1e6 particles, 39 000 at 1e7: the cost of those launches was not measured). H100: 1e5
-// spheres 1.09-1.25x with the queue, Los Bronces (1.4e5) 1.09x; 1e7 Hertz-Mindlin 1.78e9 queued
-// against 1.82e9 with the round trip (two machines; bench/results/levers/early-loads.md).
-constexpr Index kQueuedMaxParticles = Index(1) << 20;
+// round trip (~20 us: 5% of a step at 1e6 spheres, 0.4% at 1e7), for every phase queued after a
+// batch's stop still launches its whole grid to return at once (3 900 blocks at 1e6, 39 000 at
+// 1e7), a cost not yet measured against the round trip's. Measured on an H100 (bench/results/
+// levers/early-loads.md): 1e5 spheres 1.09-1.25x with the queue, the Los Bronces mill (1.4e5)
+// 1.09x; 1e7 Hertz-Mindlin 1.78e9 queued against 1.82e9 with the round trip (two machines).
+constexpr Index kQueuedMaxParticles = Index(1) << 18;
 
 template <class F>
 struct KernelPhase {
