@@ -8,9 +8,10 @@
 // launch (fused_steps: small systems, where a launch and a host round trip per phase would cost
 // more than the work). Adding a phase is adding it to the list: both runners take it as it is.
 //
-// fused_steps(space, n, k, phases, flags): up to k steps; flags[s] = 0 for a step that ran to the
-// end, else check_flag(index of the check that stopped it, its code), and the batch ends there
-// (just after that check), so the caller finishes that step from the next phase on. Cuda, up to
+// fused_steps(space, n, k, phases, flags): up to k steps; flags (zero before the call) stay 0 for
+// the steps that ran to the end, the stopped one's is check_flag(index of the check that stopped
+// it, its code), and the batch ends there (just after that check), so the caller finishes that
+// step from the next phase on. Cuda, up to
 // kFusedMaxParticles: one block runs all k steps, the phases separated by __syncthreads(); no
 // launch and no host round trip per step, which is what a step of a few hundred particles costs
 // otherwise (issue 6: the 242-ball mill). Cuda, up to kQueuedMaxParticles: the k steps' phases
@@ -117,14 +118,23 @@ PhaseStop run_phases(Space space, Index n, const Phases<H, T...>& p, int from, i
   return run_phases(space, n, p.tail, from, to, timer, index + 1);
 }
 
-template <class... P>
-void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+// Up to k steps, each through the per-phase runner (a check read back on the host every step);
+// the flag of the step a check stopped is written to `flags` (in Space's memory, zero before).
+template <class Space, class... P>
+void stepwise_steps(Space, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
   Untimed untimed;
   for (std::uint64_t s = 0; s < k; ++s) {
-    const PhaseStop stop = run_phases(Host{}, n, phases, 0, Phases<P...>::size, untimed);
-    flags[s] = stop.index < 0 ? 0 : check_flag(stop.index, stop.code);
-    if (flags[s] != 0) return;
+    const PhaseStop stop = run_phases(Space{}, n, phases, 0, Phases<P...>::size, untimed);
+    if (stop.index < 0) continue;
+    const int flag = check_flag(stop.index, stop.code);
+    copy_n(&flag, 1, flags + s, Host{}, Space{});
+    return;
   }
+}
+
+template <class... P>
+void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+  stepwise_steps(Host{}, n, k, phases, flags);
 }
 
 #if BLAZE_DEVICE_CODE
@@ -230,15 +240,7 @@ void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
     // read back.
     static const bool queue = std::getenv("BLAZE_NO_QUEUED_STEPS") == nullptr;
     if (queue && n <= kQueuedMaxParticles) return queued_steps(Cuda{}, n, k, phases, flags);
-    Untimed untimed;
-    for (std::uint64_t s = 0; s < k; ++s) {
-      const PhaseStop stop = run_phases(Cuda{}, n, phases, 0, Phases<P...>::size, untimed);
-      if (stop.index < 0) continue;
-      const int flag = check_flag(stop.index, stop.code);
-      copy_n(&flag, 1, flags + s, Host{}, Cuda{});
-      return;
-    }
-    return;
+    return stepwise_steps(Cuda{}, n, k, phases, flags);
   }
   static Buffer<List, Cuda> slot(1);  // one per instantiation, kept
   copy_n(&phases, 1, slot.data(), Host{}, Cuda{});
