@@ -25,6 +25,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
+#include <tuple>
+#include <utility>
 #include <type_traits>
 #include "blaze/exec/launch.hpp"
 #include "blaze/exec/primitives.hpp"
@@ -227,6 +230,101 @@ void queued_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, in
   for (std::uint64_t s = 0; s < k; ++s) queued_phases(phases, n, 0, state.data(), flags + s);
 }
 
+// A CUDA graph's body as a chain of kernel nodes, each after the one before.
+struct GraphChain {
+  cudaGraph_t graph;
+  cudaGraphNode_t last = nullptr;
+
+  // Adds func<<<grid, block>>>(args...); the arguments are copied into the node.
+  template <class... A, class... B>
+  void kernel(void (*func)(A...), unsigned grid, unsigned block, const B&... b) {
+    std::tuple<A...> args{static_cast<A>(b)...};
+    add(reinterpret_cast<void*>(func), grid, block, args, std::index_sequence_for<A...>{});
+  }
+  template <class F>
+  void for_each(Index n, const F& f) {
+    const unsigned blocks = static_cast<unsigned>((n + kBlockSize - 1) / kBlockSize);
+    if constexpr (min_blocks_v<F> > 0)
+      kernel(for_each_bounded_kernel<F>, blocks, kBlockSize, n, f);
+    else
+      kernel(for_each_kernel<F>, blocks, kBlockSize, n, f);
+  }
+
+ private:
+  template <class Tuple, std::size_t... I>
+  void add(void* func, unsigned grid, unsigned block, Tuple& args, std::index_sequence<I...>) {
+    void* params[] = {static_cast<void*>(&std::get<I>(args))...};
+    cudaKernelNodeParams kp{};
+    kp.func = func;
+    kp.gridDim = dim3(grid);
+    kp.blockDim = dim3(block);
+    kp.kernelParams = params;
+    cudaGraphNode_t node;
+    cuda_check(cudaGraphAddKernelNode(&node, graph, last ? &last : nullptr, last ? 1 : 0, &kp), "graph kernel node");
+    last = node;
+  }
+};
+
+// The graph's state: [0] stop, [1] the check's code, [2] the step the loop is in.
+// After a check: a nonzero code stops the batch at this step (its flag written); code back to 0.
+template <int = 0>
+__global__ void graph_settle_kernel(int* state, int* flags, int index) {
+  if (state[0] == 0 && state[1] != 0) {
+    flags[state[2]] = check_flag(index, state[1]);
+    state[0] = 1;
+  }
+  state[1] = 0;
+}
+// The body's last node: the next step, or the loop's end (stopped, or k steps run).
+template <int = 0>
+__global__ void graph_step_end_kernel(int* state, cudaGraphConditionalHandle loop, int k) {
+  const int s = ++state[2];
+  if (state[0] != 0 || s >= k) cudaGraphSetConditional(loop, 0);
+}
+
+inline void graph_phases(const Phases<>&, Index, int, GraphChain&, int*, int*) {}
+template <class H, class... T>
+void graph_phases(const Phases<H, T...>& p, Index n, int index, GraphChain& chain, int* state, int* flags) {
+  if constexpr (is_check_phase<H>::value) {
+    const auto blocks = static_cast<unsigned>(std::min<Index>((n + kBlockSize - 1) / kBlockSize, 4096));
+    chain.kernel(queued_check_kernel<decltype(p.head.f)>, blocks, kBlockSize, n, p.head.f, state, state + 1);
+    chain.kernel(graph_settle_kernel<0>, 1, 1, state, flags, index);
+  } else if (p.head.enabled) {
+    chain.for_each(n, UnlessStopped<decltype(p.head.f)>{p.head.f, state});
+  }
+  graph_phases(p.tail, n, index + 1, chain, state, flags);
+}
+
+// k steps as one CUDA graph: a while node whose body is one step's phases (each after the one
+// before, as queued_steps queues them) and a last kernel that ends the loop after the step a
+// check stopped or after k steps. The device decides: nothing is launched for the steps after a
+// stop (queued_steps launched them all, to return at once) and the host launches one graph per
+// batch instead of a kernel per phase per step. flags[s] as fused_steps's (zero before the call).
+template <class... P>
+void graph_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+  static Buffer<int, Cuda> state(3);
+  cudaGraph_t graph;
+  cuda_check(cudaGraphCreate(&graph, 0), "graph create");
+  cudaGraphConditionalHandle loop;
+  cuda_check(cudaGraphConditionalHandleCreate(&loop, graph, 1, cudaGraphCondAssignDefault), "graph loop handle");
+  cudaGraphNodeParams cp{};
+  cp.type = cudaGraphNodeTypeConditional;
+  cp.conditional.handle = loop;
+  cp.conditional.type = cudaGraphCondTypeWhile;
+  cp.conditional.size = 1;
+  cudaGraphNode_t node;
+  cuda_check(cudaGraphAddNode(&node, graph, nullptr, nullptr, 0, &cp), "graph loop node");
+  GraphChain body{cp.conditional.phGraph_out[0]};
+  graph_phases(phases, n, 0, body, state.data(), flags);
+  body.kernel(graph_step_end_kernel<0>, 1, 1, state.data(), loop, static_cast<int>(k));
+  cudaGraphExec_t exec;
+  cuda_check(cudaGraphInstantiate(&exec, graph, 0), "graph instantiate");
+  cuda_check(cudaMemsetAsync(state.data(), 0, 3 * sizeof(int)), "graph steps reset");
+  cuda_check(cudaGraphLaunch(exec, 0), "graph launch");
+  cuda_check(cudaGraphExecDestroy(exec), "graph exec destroy");  // freed once it has run
+  cuda_check(cudaGraphDestroy(graph), "graph destroy");
+}
+
 // The list is read from device memory: with a polyhedron shape table in several phases it
 // exceeds the kernel parameter space.
 template <class... P>
@@ -235,12 +333,13 @@ void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
   static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
   if (n <= 0 || k == 0) return;
   if (n > kFusedMaxParticles) {
-    // Past kQueuedMaxParticles, or with BLAZE_NO_QUEUED_STEPS set (the lever's baseline,
-    // bench/results/levers): a host round trip per step, each step's phases in turn and the check
-    // read back.
-    static const bool queue = std::getenv("BLAZE_NO_QUEUED_STEPS") == nullptr;
-    if (queue && n <= kQueuedMaxParticles) return queued_steps(Cuda{}, n, k, phases, flags);
-    return stepwise_steps(Cuda{}, n, k, phases, flags);
+    // BLAZE_STEPS (the lever's baselines, bench/results/levers): "stepwise", a host round trip per
+    // step, each step's phases in turn and the check read back; "queued", the phases queued one
+    // launch each; otherwise one graph per batch.
+    static const std::string how = std::getenv("BLAZE_STEPS") ? std::getenv("BLAZE_STEPS") : "graph";
+    if (how == "stepwise") return stepwise_steps(Cuda{}, n, k, phases, flags);
+    if (how == "queued") return queued_steps(Cuda{}, n, k, phases, flags);
+    return graph_steps(Cuda{}, n, k, phases, flags);
   }
   static Buffer<List, Cuda> slot(1);  // one per instantiation, kept
   copy_n(&phases, 1, slot.data(), Host{}, Cuda{});
