@@ -30,6 +30,8 @@ struct PlanarPolygon {
   int vertex_count;
   Vec3<Real> normal;    // unit, derived from the vertices
   Vec3<Real> centroid;  // m, derived
+  Real bound;           // m, derived: every point lies within this of the centroid (the farthest
+                        // vertex's distance, 0.1% more for the rounding of a moved polygon)
   std::uint32_t active_edges;  // bit k: edge vertex[k] -> vertex[k+1] has rim contact
   std::uint8_t material;
 
@@ -61,6 +63,7 @@ struct PlanarPolygon {
     p.vertex_count = n;
     p.normal = vec_cast<Real>(nrm);
     p.centroid = vec_cast<Real>(c);
+    p.bound = static_cast<Real>(1.001 * size);
     p.active_edges = active_edges;
     p.material = material;
     return p;
@@ -120,6 +123,10 @@ BLAZE_HD inline ContactGeometry<Real> collide_sphere(const Vec3<Real>& x, Real r
 // wall after x and the wall have each moved at most m passes it with reach = r + 2 m.
 template <class Real>
 BLAZE_HD inline bool within_reach(const Vec3<Real>& x, Real reach, const PlanarPolygon<Real>& w) {
+  // Beyond the bounding sphere: no point is in reach (most of a mill's faces for most particles:
+  // the rest of the test reads every vertex).
+  const Real far = reach + w.bound;
+  if (norm2(x - w.centroid) > far * far) return false;
   const Real d = dot(x - w.centroid, w.normal);
   if (!(d <= reach && d >= -reach)) return false;
   const Vec3<Real> q = x - d * w.normal;
