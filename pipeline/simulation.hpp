@@ -226,11 +226,11 @@ class Simulation {
   }
   // ---- A step in parts, for the distributed driver (pipeline/parallel/distributed_simulation.hpp,
   // issue 21), which exchanges ghost particles between the parts: begin_step() moves the world and
-  // the particles (the pre-force integration) and stops before the rebuild check; needs_rebuild()
-  // is that check (0: the list holds; 1: rebuild; 2: a position is not finite), which the driver
+  // the particles (the pre-force integration; the rebuild check it carries is not acted on there);
+  // needs_rebuild() is that check (0: the list holds; 1: rebuild; 2: a position is not finite), which the driver
   // answers with reload() on every rank; end_step() evaluates the forces and ends the step.
   // begin_step(), end_step() with the list holding is one step() of the per-phase path.
-  void begin_step() { run_phases(Space{}, store_.size(), step_phases(params_.dt), 0, kRebuildCheck, timer_); }
+  void begin_step() { run_phases(Space{}, store_.size(), step_phases(params_.dt), 0, kRebuildCheck + 1, timer_); }
   int needs_rebuild() {
     const int code = broad_.rebuild_check(store_);
     if (code == 0 && lists_.on()) {
@@ -557,7 +557,9 @@ class Simulation {
   // The step (phases.hpp): every phase in order. A phase added here runs in every step, batched
   // or not. Builds the functors from the current views (a rebuild moves and resizes them), after
   // sizing what they write (statistics, pair slots).
-  static constexpr int kRebuildCheck = 2, kFirstForcePhase = 3, kPostForcePhase = 7;
+  // The drift and the rebuild check are one check phase (then_check): the check reads only what
+  // the drift wrote for the same particle (its position) and the world's step (move-world's).
+  static constexpr int kRebuildCheck = 1, kFirstForcePhase = 2, kPostForcePhase = 6;
   // history_dt: the step the contact states advance by (0 for the forces at t = 0).
   auto step_phases(Real history_dt) {
     prepare_statistics();
@@ -567,8 +569,8 @@ class Simulation {
     const NeighbourView nl = broad_.neighbours();
     auto phases = make_phases(
         kernel_phase("move-world", MoveWorld<Real>{world_.motion_view(), store_.size()}, world_.dynamic()),
-        kernel_phase("integrate", integrate<Stage::pre_force>()),
-        check_phase("rebuild-check", broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until())),
+        check_phase("integrate", then_check(integrate<Stage::pre_force>(),
+                                            broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until()))),
         kernel_phase("contacts", contact_forces(history_dt), !once),
         kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt, broad_.images()}, once),
         kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats(), broad_.images()}, once),
