@@ -279,8 +279,7 @@ class Simulation {
   }
 
   // Steps run in batches with one host round trip per batch (run_batched; phases.hpp: on the GPU
-  // one launch per batch for small systems, the phases queued up to 2^18 particles, a round trip
-  // per step beyond), unless the phase timer is on (the phases are then timed one by one, with a
+  // one launch per batch for small systems, one CUDA graph per batch for larger ones), unless the phase timer is on (the phases are then timed one by one, with a
   // round trip per step).
   bool batched() const { return !timer_.enabled; }
 
@@ -624,17 +623,16 @@ class Simulation {
     }
   }
 
-  // A batch of K steps with no host round trip per step (phases.hpp: one launch, or the phases
-  // queued; on the host, the phases step after step): the batch
-  // stops at the first step whose check is set (it needs a rebuild, or found a non-finite
-  // position), just after that check; the flags are read once. That step is then finished as
-  // step() would. K doubles after a clean batch up to kMaxBatch and falls to the steps a rebuild
-  // took otherwise.
-  static constexpr std::uint64_t kMinBatch = 4, kMaxBatch = 256;
+  // A batch of K steps with no host round trip per step (phases.hpp: one launch, or one graph; on
+  // the host, the phases step after step): the batch stops at the first step whose check is set
+  // (it needs a rebuild, or found a non-finite position), just after that check; the flags are
+  // read once. That step is then finished as step() would. No path runs a step past the stop, so
+  // every batch is as long as it may be (kMaxBatch: the flags' room).
+  static constexpr std::uint64_t kMaxBatch = 256;
   void run_batched(std::uint64_t steps) {
+    flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
     while (steps > 0) {
-      const std::uint64_t k = std::min(batch_, steps);
-      flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
+      const std::uint64_t k = std::min(kMaxBatch, steps);
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
       fused_steps(Space{}, store_.size(), k, step_phases(params_.dt), flags_.data());
       const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
@@ -642,14 +640,12 @@ class Simulation {
       steps_ += j;
       if (j == k) {
         steps -= k;
-        batch_ = std::min(2 * batch_, kMaxBatch);
         continue;
       }
       const PhaseStop stop = PhaseStop::of_flag(flags[j]);  // step j, from just after its check
       on_check(stop);
       finish_step(stop.index + 1);
       steps -= j + 1;
-      batch_ = std::max(kMinBatch, j + 1);
     }
   }
 
@@ -809,7 +805,6 @@ class Simulation {
   std::uint64_t reorders_ = 1, counted_order_ = 0;
   Buffer<Index, Space> query_which_, rows_which_;
   Buffer<Real, Space> query_out_;
-  std::uint64_t batch_ = kMinBatch;
   Index initial_count_ = 0;
   Index removed_count_ = 0;
   double removed_mass_ = 0, removed_energy_ = 0;

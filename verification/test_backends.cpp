@@ -78,8 +78,8 @@ bool bitwise_equal(const ParticleState<double>& a, const ParticleState<double>& 
   return same;
 }
 
-// Steps run in batches (exec/phases.hpp: on the GPU one launch per batch for small systems, the
-// phases queued behind a stop flag for larger ones), stopping at a step that needs a rebuild: the
+// Steps run in batches (exec/phases.hpp: on the GPU one launch per batch for small systems, one
+// CUDA graph per batch, its steps' phases behind a stop flag, for larger ones), stopping at a step that needs a rebuild: the
 // trajectory is bitwise that of single steps, through a loose bed's frequent rebuilds, on both
 // sides of kFusedMaxParticles. On the host it is also bitwise that of one launch per phase (the
 // phase timer's path; on the GPU the two compiled kernels may contract a*b + c into FMAs

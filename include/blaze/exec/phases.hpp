@@ -11,21 +11,21 @@
 // fused_steps(space, n, k, phases, flags): up to k steps; flags (zero before the call) stay 0 for
 // the steps that ran to the end, the stopped one's is check_flag(index of the check that stopped
 // it, its code), and the batch ends there (just after that check), so the caller finishes that
-// step from the next phase on. Cuda, up to
-// kFusedMaxParticles: one block runs all k steps, the phases separated by __syncthreads(); no
-// launch and no host round trip per step, which is what a step of a few hundred particles costs
-// otherwise (issue 6: the 242-ball mill). Cuda, up to kQueuedMaxParticles: the k steps' phases
-// are queued as one launch each, with no host round trip between them (queued_steps): a check
-// reduces into device memory and, when it stops the step, raises a stop flag that every later
-// kernel of the batch reads first and returns on (the host used to wait for each step's rebuild
-// check before it launched the step's force phases: the queue is 1.09-1.25x on dense beds of 1e5
-// spheres and 1.09x on the Los Bronces mill's 1.4e5, H100). Cuda, larger: the per-phase runner
-// with its round trip per step. Host: the per-phase runner, step after step.
+// step from the next phase on. No path runs a step past the stop, so a batch may be as long as
+// the caller likes. Cuda, up to kFusedMaxParticles: one block runs all k steps, the phases
+// separated by __syncthreads(); no launch and no host round trip per step, which is what a step
+// of a few hundred particles costs otherwise (issue 6: the 242-ball mill). Cuda, larger: the batch
+// is one CUDA graph (graph_steps): a while node whose body is one step's phases, one kernel node
+// each; a check reduces into device memory and, when it stops the step, raises a stop flag that
+// the step's later kernels read first and return on, and the body's last kernel ends the loop.
+// The host launches one graph per batch instead of a kernel per phase per step and reads the
+// flags once (H100, against a read-back per step: 1.27x on a dense bed of 1e5 spheres, 1.06x at
+// 1e6, 1.16x on the Los Bronces mill's 1.4e5; bench/results/levers/graph-steps.md). Host: the
+// per-phase runner, step after step.
 #pragma once
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <string>
 #include <tuple>
 #include <utility>
 #include <type_traits>
@@ -36,13 +36,6 @@ namespace blaze {
 
 // Up to this many particles the one-block path is used (16 particles per thread at most).
 constexpr Index kFusedMaxParticles = 4096;
-// Up to this many the GPU queues a batch's phases (queued_steps); beyond, a step keeps its host
-// round trip (~20 us: 5% of a step at 1e6 spheres, 0.4% at 1e7), for every phase queued after a
-// batch's stop still launches its whole grid to return at once (3 900 blocks at 1e6, 39 000 at
-// 1e7), a cost not yet measured against the round trip's. Measured on an H100 (bench/results/
-// levers/early-loads.md): 1e5 spheres 1.09-1.25x with the queue, the Los Bronces mill (1.4e5)
-// 1.09x; 1e7 Hertz-Mindlin 1.78e9 queued against 1.82e9 with the round trip (two machines).
-constexpr Index kQueuedMaxParticles = Index(1) << 18;
 
 template <class F>
 struct KernelPhase {
@@ -192,7 +185,7 @@ __global__ void __launch_bounds__(kFusedBlockSize) fused_steps_kernel(Index n, s
   }
 }
 
-// A phase of a queued batch: nothing once the batch has stopped (*stop != 0); the kernel keeps
+// A phase of a graph's step: nothing once the batch has stopped (*stop != 0); the kernel keeps
 // the phase's own launch bounds.
 template <class F>
 struct UnlessStopped {
@@ -203,49 +196,15 @@ struct UnlessStopped {
     if (*stop == 0) f(i);
   }
 };
-// A check of a queued batch: max of f(i) into *code (zero before), unless stopped.
+// A check of a graph's step: max of f(i) into *code (zero before), unless stopped.
 template <class F>
-__global__ void queued_check_kernel(Index n, F f, const int* stop, int* code) {
+__global__ void graph_check_kernel(Index n, F f, const int* stop, int* code) {
   if (*stop != 0) return;
   int v = 0;
   for (Index i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += gridDim.x * blockDim.x) v = max(v, f(i));
   for (int o = 16; o > 0; o /= 2) v = max(v, __shfl_down_sync(0xffffffffu, v, o));
   if ((threadIdx.x & 31) == 0 && v != 0) atomicMax(code, v);
 }
-// After a check: a nonzero code stops the batch at this step (its flag written); code back to 0.
-template <int = 0>
-__global__ void queued_settle_kernel(int* stop, int* code, int* flag, int index) {
-  if (*stop == 0 && *code != 0) {
-    *flag = check_flag(index, *code);
-    *stop = 1;
-  }
-  *code = 0;
-}
-
-inline void queued_phases(const Phases<>&, Index, int, int*, int*) {}
-template <class H, class... T>
-void queued_phases(const Phases<H, T...>& p, Index n, int index, int* state, int* flag) {
-  if constexpr (is_check_phase<H>::value) {
-    const int blocks = static_cast<int>(std::min<Index>((n + kBlockSize - 1) / kBlockSize, 4096));
-    queued_check_kernel<<<blocks, kBlockSize>>>(n, p.head.f, state, state + 1);
-    cuda_check(cudaGetLastError(), "queued check launch");
-    queued_settle_kernel<<<1, 1>>>(state, state + 1, flag, index);
-    cuda_check(cudaGetLastError(), "queued settle launch");
-  } else if (p.head.enabled) {
-    for_each(Cuda{}, n, UnlessStopped<decltype(p.head.f)>{p.head.f, state});
-  }
-  queued_phases(p.tail, n, index + 1, state, flag);
-}
-
-// k steps of a larger system, every phase queued (see the top of this file); flags[s] as
-// fused_steps's (zero before the call).
-template <class... P>
-void queued_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
-  static Buffer<int, Cuda> state(2);  // the stop flag and the check's code; one stream
-  cuda_check(cudaMemsetAsync(state.data(), 0, 2 * sizeof(int)), "queued steps reset");
-  for (std::uint64_t s = 0; s < k; ++s) queued_phases(phases, n, 0, state.data(), flags + s);
-}
-
 // A CUDA graph's body as a chain of kernel nodes, each after the one before.
 struct GraphChain {
   cudaGraph_t graph;
@@ -303,7 +262,7 @@ template <class H, class... T>
 void graph_phases(const Phases<H, T...>& p, Index n, int index, GraphChain& chain, int* state, int* flags) {
   if constexpr (is_check_phase<H>::value) {
     const auto blocks = static_cast<unsigned>(std::min<Index>((n + kBlockSize - 1) / kBlockSize, 4096));
-    chain.kernel(queued_check_kernel<decltype(p.head.f)>, blocks, kBlockSize, n, p.head.f, state, state + 1);
+    chain.kernel(graph_check_kernel<decltype(p.head.f)>, blocks, kBlockSize, n, p.head.f, state, state + 1);
     chain.kernel(graph_settle_kernel<0>, 1, 1, state, flags, index);
   } else if (p.head.enabled) {
     chain.for_each(n, UnlessStopped<decltype(p.head.f)>{p.head.f, state});
@@ -312,10 +271,9 @@ void graph_phases(const Phases<H, T...>& p, Index n, int index, GraphChain& chai
 }
 
 // k steps as one CUDA graph: a while node whose body is one step's phases (each after the one
-// before, as queued_steps queues them) and a last kernel that ends the loop after the step a
+// before) and a last kernel that ends the loop after the step a
 // check stopped or after k steps. The device decides: nothing is launched for the steps after a
-// stop (queued_steps launched them all, to return at once) and the host launches one graph per
-// batch instead of a kernel per phase per step. flags[s] as fused_steps's (zero before the call).
+// stop and the host launches one graph per batch instead of a kernel per phase per step. flags[s] as fused_steps's (zero before the call).
 template <class... P>
 void graph_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
   static Buffer<int, Cuda> state(3);
@@ -349,12 +307,10 @@ void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
   static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
   if (n <= 0 || k == 0) return;
   if (n > kFusedMaxParticles) {
-    // BLAZE_STEPS (the lever's baselines, bench/results/levers): "stepwise", a host round trip per
-    // step, each step's phases in turn and the check read back; "queued", the phases queued one
-    // launch each; otherwise one graph per batch.
-    static const std::string how = std::getenv("BLAZE_STEPS") ? std::getenv("BLAZE_STEPS") : "graph";
-    if (how == "stepwise") return stepwise_steps(Cuda{}, n, k, phases, flags);
-    if (how == "queued") return queued_steps(Cuda{}, n, k, phases, flags);
+    // BLAZE_STEPWISE=1 (the lever's baseline, bench/results/levers/graph-steps.md): a host round
+    // trip per step, each step's phases in turn and the check read back.
+    static const bool stepwise = std::getenv("BLAZE_STEPWISE") != nullptr;
+    if (stepwise) return stepwise_steps(Cuda{}, n, k, phases, flags);
     return graph_steps(Cuda{}, n, k, phases, flags);
   }
   static Buffer<List, Cuda> slot(1);  // one per instantiation, kept
