@@ -3,7 +3,8 @@
 // tests a few objects instead of every one (a mill's shell, end plates and lifter faces).
 // - The reach test is conservative: every sphere that touches a polygon (a lifter face, a
 //   triangle) or a drum cylinder passes within_reach with its own radius (random spheres near
-//   and across the edges and ends, float and double); far ones do not.
+//   and across the edges and ends, float and double); far ones do not; a polygon's bounding
+//   sphere, tested first, never changes the answer (turned polygons, near and far points).
 // - In a turning mill with lifters (15 objects), at every sample the lists hold every object that
 //   touches a ball, for skins of 0.05 r to r, float and double: the lifters move up to skin / 2
 //   between builds and the rebuild check trips when they may have (World::surface_speed); the
@@ -101,6 +102,32 @@ void reach_is_conservative() {
   }
   BOOST_TEST(touched > 2000);  // the sample does touch
   BOOST_TEST(far_passed == 0);
+  // The bounding-sphere rejection (PlanarPolygon::bound) never changes the answer: against the
+  // same polygons with no bound, turned and shifted by a pose as a moving lifter is, for points
+  // from inside the polygon's reach to far beyond it.
+  int changed = 0, reached = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double angle = 3.0 * u(rng);
+    Motion m;
+    m.kind = MotionKind::rotation;
+    m.axis = Vec3<double>{0.3, 1, -0.2} * (1 / std::sqrt(1.13));
+    m.point = {0.05, -0.02, 0.01};
+    m.omega = angle;
+    const Pose<Real> pose = pose_at<Real>(m, 1.0);
+    for (const auto* ref : {&quad, &tri}) {
+      const PlanarPolygon<Real> w = moved(*ref, pose);
+      PlanarPolygon<Real> unbounded = w;
+      unbounded.bound = Real(1e30);
+      const Vec3<Real> x = w.centroid + vec_cast<Real>(Vec3<double>{u(rng), u(rng), u(rng)} * 0.1);
+      const Real reach = static_cast<Real>(0.002 + 0.05 * (0.5 + 0.5 * u(rng)));
+      const bool in = within_reach(x, reach, w);
+      changed += in != within_reach(x, reach, unbounded);
+      reached += in;
+    }
+  }
+  BOOST_TEST(changed == 0);
+  BOOST_TEST(reached > 2000);  // both answers occur
+  BOOST_TEST(reached < 39000);
 }
 
 // Runs the small mill for `seconds` with skin s_frac r, checking every `every` steps that each
