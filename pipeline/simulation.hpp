@@ -226,9 +226,9 @@ class Simulation {
   }
   // ---- A step in parts, for the distributed driver (pipeline/parallel/distributed_simulation.hpp,
   // issue 21), which exchanges ghost particles between the parts: begin_step() moves the world and
-  // the particles (the pre-force integration; the rebuild check it carries is not acted on there);
-  // needs_rebuild() is that check (0: the list holds; 1: rebuild; 2: a position is not finite), which the driver
-  // answers with reload() on every rank; end_step() evaluates the forces and ends the step.
+  // the particles (the pre-force integration; the rebuild check it carries is not acted on
+  // there); needs_rebuild() is that check (0: the list holds; 1: rebuild; 2: a position is not
+  // finite), which the driver answers with reload() on every rank; end_step() evaluates the forces and ends the step.
   // begin_step(), end_step() with the list holding is one step() of the per-phase path.
   void begin_step() { run_phases(Space{}, store_.size(), step_phases(params_.dt), 0, kRebuildCheck + 1, timer_); }
   int needs_rebuild() {
@@ -279,8 +279,8 @@ class Simulation {
   }
 
   // Steps run in batches with one host round trip per batch (run_batched; phases.hpp: on the GPU
-  // one launch per batch for small systems, one CUDA graph per batch for larger ones), unless the phase timer is on (the phases are then timed one by one, with a
-  // round trip per step).
+  // one launch per batch for small systems, one CUDA graph per batch for larger ones), unless
+  // the phase timer is on (the phases are then timed one by one, with a round trip per step).
   bool batched() const { return !timer_.enabled; }
 
   ParticleState<Real> state() const { return state_of(store_); }
