@@ -228,7 +228,8 @@ class Simulation {
   // issue 21), which exchanges ghost particles between the parts: begin_step() moves the world and
   // the particles (the pre-force integration; the rebuild check it carries is not acted on
   // there); needs_rebuild() is that check (0: the list holds; 1: rebuild; 2: a position is not
-  // finite), which the driver answers with reload() on every rank; end_step() evaluates the forces and ends the step.
+  // finite), which the driver answers with reload() on every rank; end_step() evaluates the
+  // forces and ends the step.
   // begin_step(), end_step() with the list holding is one step() of the per-phase path.
   void begin_step() { run_phases(Space{}, store_.size(), step_phases(params_.dt), 0, kRebuildCheck + 1, timer_); }
   int needs_rebuild() {
