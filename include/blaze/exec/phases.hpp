@@ -271,9 +271,10 @@ void graph_phases(const Phases<H, T...>& p, Index n, int index, GraphChain& chai
 }
 
 // k steps as one CUDA graph: a while node whose body is one step's phases (each after the one
-// before) and a last kernel that ends the loop after the step a
-// check stopped or after k steps. The device decides: nothing is launched for the steps after a
-// stop and the host launches one graph per batch instead of a kernel per phase per step. flags[s] as fused_steps's (zero before the call).
+// before) and a last kernel that ends the loop after the step a check stopped or after k steps.
+// The device decides: nothing is launched for the steps after a stop, and the host launches one
+// graph per batch instead of a kernel per phase per step. The graph is built and instantiated
+// for every batch (the views move at rebuilds); its cost was not measured apart. flags[s] as fused_steps's (zero before the call).
 template <class... P>
 void graph_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
   static Buffer<int, Cuda> state(3);
