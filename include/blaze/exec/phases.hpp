@@ -27,8 +27,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <tuple>
-#include <utility>
 #include <type_traits>
+#include <utility>
 #include "blaze/exec/launch.hpp"
 #include "blaze/exec/primitives.hpp"
 
@@ -274,7 +274,8 @@ void graph_phases(const Phases<H, T...>& p, Index n, int index, GraphChain& chai
 // before) and a last kernel that ends the loop after the step a check stopped or after k steps.
 // The device decides: nothing is launched for the steps after a stop, and the host launches one
 // graph per batch instead of a kernel per phase per step. The graph is built and instantiated
-// for every batch (the views move at rebuilds); its cost was not measured apart. flags[s] as fused_steps's (zero before the call).
+// for every batch (the views move at rebuilds); its cost was not measured apart. flags[s] as
+// fused_steps's (zero before the call).
 template <class... P>
 void graph_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
   static Buffer<int, Cuda> state(3);
