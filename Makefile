@@ -47,6 +47,8 @@ LDFLAGS_cpu := -fopenmp $(SAN_FLAGS)
 # functions __host__ __device__ under nvcc.
 NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-call,all-warnings -DEIGEN_NO_CUDA \
              -Xcompiler -fopenmp,$(subst $(space),$(comma),$(WARN)) -Iinclude -I. -isystem /usr/include/eigen3 -DBLAZE_TEST_HEADER_ONLY
+# NVCC_EXTRA=-lineinfo: source lines for the profiler (ncu's source view); no change to the code.
+NVCCFLAGS += $(NVCC_EXTRA)
 # The GPU machine has Boost headers but not its compiled libraries: CUDA builds use the header-only
 # Boost.Test, and studies plot only where gnuplot-iostream was found at build time.
 TEST_LIBS_cpu := -lboost_unit_test_framework -lgsl -lgslcblas

@@ -15,7 +15,8 @@
 // (skin in radii, default 0.2), --pairs auto|both_sides|once (SimulationParams::pairs; auto:
 // polyhedra once, spheres from both sides), --min-n N, --max-n N, --mesh-n N (the mesh cases'
 // particles: default 1e6 on the GPU, 2e4 on the CPU), --tag TAG, --cases
-// spheres,polyhedra,packed,surfaces,skip,mill,lifters,mesh,largest (default all but largest, lifters and mesh).
+// spheres,polyhedra,packed,surfaces,skip,mill,lifters,mesh,largest (default all but largest, lifters and mesh;
+// mill-turning: the turning lab mill alone).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -209,10 +210,11 @@ int main(int argc, char** argv) {
     print_rows(rows, first);
     write_csv(file, earlier, rows, at);
   }
-  if (wanted("mill")) {
-    rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000));
+  if (wanted("mill") || wanted("mill-turning")) {  // mill-turning: the turning mill alone
+    const std::size_t first = rows.size();
+    if (wanted("mill")) rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000));
     rows.push_back(mill_case(gpu ? 10000 : 10000, gpu ? 20000 : 2000, true));
-    print_rows(rows, rows.size() - 2);
+    print_rows(rows, first);
   }
   if (wanted("lifters")) {  // world kernel cost against lifter rows, lists on (automatic) and off
     const std::size_t first = rows.size();
