@@ -79,7 +79,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
   if (root) std::filesystem::create_directories(dir);
   std::ofstream csv(root ? dir + "/power.csv" : std::string("/dev/null"));  // (every rank runs the loop)
   csv << "revolution,t_end_s,power_W,energy_method_W,thesis_estimate_W,pair_W,shell_W,lifter_W,end_plate_W,wall_W,kinetic_J,dissipated_J,"
-         "drive_work_J,balls,toe_deg,shoulder_deg,centrifuging_balls,centrifuging_layers\n";
+         "drive_work_J,balls,toe_deg,shoulder_deg,centrifuging_balls,centrifuging_layers,wall_s\n";
   const auto steps_to = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
   const auto wall0 = std::chrono::steady_clock::now();
   const auto e0_sample = sim.sample(s.output.penetration_warning);  // E(0), the balance's start
@@ -105,6 +105,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
       if (rev > skip) field.add(st.position, st.velocity);
     };
     const double t_start = rev > 0 ? t_end - period : sim.time();
+    const auto rev_wall0 = std::chrono::steady_clock::now();  // the revolution's wall time (its steps and samples)
     if (rev > 0) track();
     for (int k = 1; k <= kSamples; ++k) {
       sim.run(steps_to(t_start + (t_end - t_start) * k / kSamples) - sim.steps());
@@ -112,6 +113,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
     }
     if (rev > 0) spun = tracker.report();
     const auto smp = sim.sample(s.output.penetration_warning);
+    const double rev_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - rev_wall0).count();
     work += smp.drive_work;
     by_class[0] = smp.dissipated_pair;  // this revolution's (the sample resets the accounts)
     for (int c = 0; c < kContactClasses; ++c) by_class[1 + c] = smp.dissipated_walls[c];
@@ -127,10 +129,10 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
                     1 + static_cast<int>(ContactClass::end_plate), 1 + static_cast<int>(ContactClass::wall)})
         csv << ',' << by_class[c] / period;
       csv << ',' << smp.energies.kinetic() << ',' << dissipated << ',' << work << ',' << sim.size() << ',' << cp.toe_deg << ','
-          << cp.shoulder_deg << ',' << spun.balls << ',' << spun.layers << '\n';
+          << cp.shoulder_deg << ',' << spun.balls << ',' << spun.layers << ',' << rev_wall << '\n';
       std::printf("  revolution %3d (t = %6.2f s): %8.2f W (energy method %8.2f W, thesis's estimate %8.2f W), toe %6.1f deg, "
-                  "shoulder %6.1f deg, %d balls centrifuging in %d layers\n",
-                  rev, sim.time(), power, energy_method, thesis, cp.toe_deg, cp.shoulder_deg, spun.balls, spun.layers);
+                  "shoulder %6.1f deg, %d balls centrifuging in %d layers; %.1f s wall time\n",
+                  rev, sim.time(), power, energy_method, thesis, cp.toe_deg, cp.shoulder_deg, spun.balls, spun.layers, rev_wall);
       if (rev > skip) {
         sum += power, sum_energy += energy_method, sum_thesis += thesis, ++averaged;
         if (cp.found) toe_sum += cp.toe_deg, shoulder_sum += cp.shoulder_deg, ++profiles;
