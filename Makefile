@@ -17,6 +17,7 @@
 #   make fig-slice-mill    the slice mill's power and centrifuging layers against speed (studies/mill)
 #   make fig-mill-2d       the 2D mill's toe and shoulder against friction (thesis 4.1.5; GPU)
 #   make los-bronces       the SAG mill of thesis 4.3: power per revolution and its split (GPU)
+#   make mill-scaling      the thesis's 4e6-ball scaling mill (4.3.1): one revolution's wall time (GPU)
 #   make fig-mill-work-precision  the lab mill's error against wall time over dt and precision
 # Both install missing Debian packages first (tools/ensure_deps.sh).
 # BUILD=dir builds elsewhere; TEST_SRC="verification/test_main.cpp verification/test_x.cpp" builds a subset.
@@ -330,7 +331,9 @@ fig-2.17: deps
 # make los-bronces: the SAG mill of section 4.3 (139k spheres, 64 lifter rows, seven revolutions)
 # -> data/mill/los_bronces/, studies/mill/los-bronces.md, plots/fig-los-bronces.png
 # (tools/los_bronces.sh; a GPU target: 2.2e6 steps).
-.PHONY: table-4.4 fig-slice-mill fig-mill-2d fig-mill-work-precision los-bronces
+# make mill-scaling: the scaling mill of section 4.3.1 (4e6 balls, 28 m, one revolution)
+# -> data/mill/scaling_mill/, studies/mill/scaling-mill.md (tools/scaling_mill.sh; a GPU target: 4e5 steps of 4e6 balls).
+.PHONY: table-4.4 fig-slice-mill fig-mill-2d fig-mill-work-precision los-bronces mill-scaling
 table-4.4: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/table_4_4.sh $(BUILD)/$(RUN_BACKEND)/study_mill
@@ -340,6 +343,9 @@ fig-slice-mill: deps
 los-bronces: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/los_bronces.sh $(BUILD)/$(RUN_BACKEND)/study_mill
+mill-scaling: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
+	tools/scaling_mill.sh $(BUILD)/$(RUN_BACKEND)/study_mill
 fig-mill-2d: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_mill
 	tools/mill_2d.sh $(BUILD)/$(RUN_BACKEND)/study_mill
