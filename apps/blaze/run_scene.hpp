@@ -344,12 +344,14 @@ int run_scene(const Scene& s, const Options& o) {
   Shape shape;
   ParticleState<Real> particles;
   std::vector<ConvexShape> shapes;
+  // A restart takes its particles from the checkpoint, whose identity holds the placements: they
+  // are not placed again (a 4e6-ball random fill takes a minute).
   if constexpr (polyhedra) {
     shapes = build_shapes(s);
     shape.table = build_shape_table<Real>(s, shapes);
-    particles = build_particles<Real>(s, &shape.table);
+    if (o.restart.empty()) particles = build_particles<Real>(s, &shape.table);
   } else {
-    particles = build_particles<Real>(s, nullptr);
+    if (o.restart.empty()) particles = build_particles<Real>(s, nullptr);
   }
   // Unless the scene says: polyhedra evaluate each pair once (their pairs are dear: 1.8x on the
   // CPU), spheres from both sides (a sphere pair costs less than its slot's memory traffic).
