@@ -247,6 +247,25 @@ Row skip_case(const char* label, long n, long warmup, long steps) {
 // lifter_rows (turning only): the lifter-count sweep (--cases lifters, issue 19's world-kernel row):
 // 0-64 rows of 4 cm x 2 cm bars (8 rows keep the 4 cm square bars), with the world lists as
 // `blaze run` picks them (automatic) or off.
+#ifdef BLAZE_FUSED_CLOCKS
+// The one-block kernel's cycles per step, by phase index (phases.hpp, BLAZE_FUSED_CLOCKS): the
+// phase (slowest warp and barrier), and each warp's work before the barrier.
+inline void print_fused_clocks(const char* scene, const FusedClocks& c) {
+  std::printf("fused clocks, %s: %llu steps begun in the one-block kernel; cycles per step: phase [warp 0..%d work]\n", scene,
+              c.steps, kFusedClockWarps - 1);
+  double total = 0;
+  for (std::size_t k = 0; k < c.phase.size(); ++k) {
+    if (c.phase[k][0] == 0) continue;
+    const double d = c.steps ? static_cast<double>(c.steps) : 1.0;
+    total += static_cast<double>(c.phase[k][0]) / d;
+    std::printf("  phase %zu: %8.0f [", k, static_cast<double>(c.phase[k][0]) / d);
+    for (std::size_t w = 1; w < c.phase[k].size(); ++w) std::printf(" %6.0f", static_cast<double>(c.phase[k][w]) / d);
+    std::printf(" ]\n");
+  }
+  std::printf("  all phases: %.0f cycles per step\n", total);
+}
+#endif
+
 inline Row mill_case(long warmup, long steps, bool turning = false, int lifter_rows = 8, WorldLists lists = WorldLists::automatic) {
   using Law = ContactLaw<float, LinearSpringDashpot, HistoryFreeFriction>;
   using V = Vec3<double>;
@@ -289,7 +308,13 @@ inline Row mill_case(long warmup, long steps, bool turning = false, int lifter_r
   std::string scene = turning ? "mill-turning" : "mill";
   if (turning && (lifter_rows != 8 || lists != WorldLists::automatic))
     scene = "mill-lifters" + std::to_string(lifter_rows) + (lists == WorldLists::off ? "-nolists" : "");
+#ifdef BLAZE_FUSED_CLOCKS
+  fused_clock_counts();  // from zero
+#endif
   Row row = measure(sim, "mill-242", "linear", "float", scene.c_str(), world.object_count(), warmup, steps);
+#ifdef BLAZE_FUSED_CLOCKS
+  print_fused_clocks(scene.c_str(), fused_clock_counts());
+#endif
   if (sim.removed_count() != 0) std::printf("WARNING: %d balls left the mill\n", static_cast<int>(sim.removed_count()));
   return row;
 }

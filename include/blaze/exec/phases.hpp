@@ -29,6 +29,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 #include "blaze/exec/launch.hpp"
 #include "blaze/exec/primitives.hpp"
 
@@ -152,26 +153,79 @@ void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int
 #if BLAZE_DEVICE_CODE
 constexpr int kFusedBlockSize = 256;
 
+#ifdef BLAZE_FUSED_CLOCKS
+// A profiling build (make NVCC_EXTRA=-DBLAZE_FUSED_CLOCKS; never the default): the one-block
+// kernel counts, per phase index, the cycles from the phase's start to the barrier after it
+// (thread 0: the slowest warp's time plus the barrier's) and each warp's own cycles until it
+// reaches that barrier (its work), summed over the steps; fused_clock_counts() reads and clears
+// them. What a phase costs and how evenly its warps share it, without a profiler.
+constexpr int kFusedClockPhases = 16, kFusedClockWarps = kFusedBlockSize / 32;
+__device__ unsigned long long fused_phase_cycles[kFusedClockPhases];
+__device__ unsigned long long fused_warp_cycles[kFusedClockPhases * kFusedClockWarps];
+__device__ unsigned long long fused_clock_steps;  // steps begun
+__device__ inline void fused_clock_work(int index, long long t0) {
+  if (index < kFusedClockPhases && (threadIdx.x & 31) == 0)
+    fused_warp_cycles[index * kFusedClockWarps + threadIdx.x / 32] += static_cast<unsigned long long>(clock64() - t0);
+}
+__device__ inline void fused_clock_phase(int index, long long t0) {
+  if (index < kFusedClockPhases && threadIdx.x == 0) fused_phase_cycles[index] += static_cast<unsigned long long>(clock64() - t0);
+}
+struct FusedClocks {
+  unsigned long long steps = 0;
+  std::vector<std::vector<unsigned long long>> phase;  // [index][0]: the phase's cycles, [index][1 + w]: warp w's work
+};
+inline FusedClocks fused_clock_counts() {
+  unsigned long long ph[kFusedClockPhases], wa[kFusedClockPhases * kFusedClockWarps];
+  FusedClocks out;
+  cuda_check(cudaMemcpyFromSymbol(ph, fused_phase_cycles, sizeof ph), "fused clocks");
+  cuda_check(cudaMemcpyFromSymbol(wa, fused_warp_cycles, sizeof wa), "fused clocks");
+  cuda_check(cudaMemcpyFromSymbol(&out.steps, fused_clock_steps, sizeof out.steps), "fused clocks");
+  out.phase.resize(kFusedClockPhases);
+  for (int k = 0; k < kFusedClockPhases; ++k) {
+    out.phase[k].push_back(ph[k]);
+    for (int w = 0; w < kFusedClockWarps; ++w) out.phase[k].push_back(wa[k * kFusedClockWarps + w]);
+  }
+  const unsigned long long zero_ph[kFusedClockPhases] = {}, zero_wa[kFusedClockPhases * kFusedClockWarps] = {}, zero = 0;
+  cuda_check(cudaMemcpyToSymbol(fused_phase_cycles, zero_ph, sizeof zero_ph), "fused clocks");
+  cuda_check(cudaMemcpyToSymbol(fused_warp_cycles, zero_wa, sizeof zero_wa), "fused clocks");
+  cuda_check(cudaMemcpyToSymbol(fused_clock_steps, &zero, sizeof zero), "fused clocks");
+  return out;
+}
+#define BLAZE_FUSED_CLOCK_START const long long clock_t0 = clock64()
+#define BLAZE_FUSED_CLOCK_WORK(index) fused_clock_work(index, clock_t0)
+#define BLAZE_FUSED_CLOCK_PHASE(index) fused_clock_phase(index, clock_t0)
+#else
+#define BLAZE_FUSED_CLOCK_START
+#define BLAZE_FUSED_CLOCK_WORK(index)
+#define BLAZE_FUSED_CLOCK_PHASE(index)
+#endif
+
 // One phase of one step in the block; false: a check stopped the step (flag written).
 __device__ inline bool fused_phase(const Phases<>&, Index, int, int*, int*) { return true; }
 template <class H, class... T>
 __device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* flag, int* code) {
   if constexpr (is_check_phase<H>::value) {
+    BLAZE_FUSED_CLOCK_START;
     if (threadIdx.x == 0) *code = 0;
     __syncthreads();
     int c = 0;
     for (Index i = threadIdx.x; i < n; i += blockDim.x) c = max(c, p.head.f(i));
     atomicMax(code, c);
+    BLAZE_FUSED_CLOCK_WORK(index);
     __syncthreads();
     const int step_code = *code;  // the same in every thread: they stop together
     __syncthreads();              // every thread has read it before a later check resets it
+    BLAZE_FUSED_CLOCK_PHASE(index);
     if (step_code != 0) {
       if (threadIdx.x == 0) *flag = check_flag(index, step_code);
       return false;
     }
   } else if (p.head.enabled) {
+    BLAZE_FUSED_CLOCK_START;
     for (Index i = threadIdx.x; i < n; i += blockDim.x) p.head.f(i);
+    BLAZE_FUSED_CLOCK_WORK(index);
     __syncthreads();
+    BLAZE_FUSED_CLOCK_PHASE(index);
   }
   return fused_phase(p.tail, n, index + 1, flag, code);
 }
@@ -181,6 +235,9 @@ __global__ void __launch_bounds__(kFusedBlockSize) fused_steps_kernel(Index n, s
   __shared__ int code;
   for (std::uint64_t s = 0; s < k; ++s) {
     if (threadIdx.x == 0) flags[s] = 0;
+#ifdef BLAZE_FUSED_CLOCKS
+    if (threadIdx.x == 0) ++fused_clock_steps;
+#endif
     if (!fused_phase(*ph, n, 0, flags + s, &code)) return;
   }
 }
