@@ -18,7 +18,9 @@ BLAZE_HD void book_energy(const ParticleView<Real>& p, Index i, Real dt) {
   const Vec3<Real> w = Features::rotation ? p.angular_velocity.get(i) : Vec3<Real>{0, 0, 0};
   Vec3<Real> f_pair = p.force.get(i);
   Vec3<Real> t_pair = Features::rotation ? p.torque.get(i) : Vec3<Real>{0, 0, 0};
+  const unsigned classes = p.ledger.class_mask[i];  // the others' sums are zero this step
   for (int c = 0; c < kContactClasses; ++c) {
+    if (!(classes >> c & 1u)) continue;
     const auto& l = p.ledger;
     const Vec3<Real> f{l.sum(c, 0, i), l.sum(c, 1, i), l.sum(c, 2, i)};
     const Vec3<Real> t = Features::rotation ? Vec3<Real>{l.sum(c, 3, i), l.sum(c, 4, i), l.sum(c, 5, i)} : Vec3<Real>{0, 0, 0};

@@ -11,7 +11,8 @@
 // When the run keeps energy accounts (blaze/particles/energy_ledger.hpp), each contact books
 // the drive's work (F . v_w(p) + M . omega) dt to the drive column and to its object's class
 // column, and adds its force F and torque r x F + M to the class's sums of the particle
-// (EnergyLedger::class_sums, zeroed here every step); the integrator's last kick then books
+// (EnergyLedger::class_sums; the first contact of a class in a step writes them, and the class
+// mask says which were written); the integrator's last kick then books
 // -(F_c . v + T_c . w) dt with the step's final velocities (kernels/integrate.hpp, book_energy).
 // With Features::thesis_power each contact also adds the thesis's estimate |F_diss| |V| dt
 // (contact_pair.hpp, thesis_dissipation).
@@ -54,8 +55,7 @@ struct WorldForces {
     unsigned seen = 0;  // slots of objects touched this step
     Real work = 0;      // J, done this step by moving objects on i (energy accounts)
     Real thesis = 0;    // J, the thesis's estimate over i's wall contacts (Features::thesis_power)
-    if (p.ledger.on())
-      for (int k = 0; k < kClassSumReals; ++k) p.ledger.class_sums[static_cast<std::size_t>(k) * p.ledger.n + i] = Real(0);
+    unsigned classes = 0;  // the classes whose sums this step has written (EnergyLedger::class_mask)
     // A contact with object w (world_contacts.hpp: key, and for a mesh the group of its contacts).
     const auto apply = [&](const auto& g, int material, int w, WallKey key, const auto* group) {
       if (!g.touching) return;
@@ -94,12 +94,15 @@ struct WorldForces {
         work += drive;
         p.ledger.column[ledger_column(cc)][i] += drive;
         const Vec3<Real> tc = Features::rotation ? cross(ri, c.force) + mc : zero;
-        p.ledger.sum(cls, 0, i) += c.force.x, p.ledger.sum(cls, 1, i) += c.force.y, p.ledger.sum(cls, 2, i) += c.force.z;
-        p.ledger.sum(cls, 3, i) += tc.x, p.ledger.sum(cls, 4, i) += tc.y, p.ledger.sum(cls, 5, i) += tc.z;
+        const Real add[6] = {c.force.x, c.force.y, c.force.z, tc.x, tc.y, tc.z};
+        const bool first = !(classes >> cls & 1u);  // the class's first contact this step: written, not added
+        for (int k = 0; k < 6; ++k) p.ledger.sum(cls, k, i) = first ? add[k] : p.ledger.sum(cls, k, i) + add[k];
+        classes |= 1u << cls;
       }
     };
     for_each_world_contact(shape, body, world, i, apply);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
+    if (p.ledger.on()) p.ledger.class_mask[i] = static_cast<std::uint8_t>(classes);
     if (!touched) return;
     if (p.ledger.on()) p.ledger.column[kLedgerDrive][i] += work;
     if constexpr (Features::thesis_power)
