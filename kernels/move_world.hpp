@@ -21,12 +21,31 @@ struct MoveWorld {
   BLAZE_HD void operator()(Index i) const {
     const int objects = w.polygon_count + w.cylinder_count + w.mesh_count;
     for (long o = i; o < objects; o += n) {
-      const std::uint64_t s = ++w.step[o];
-      const Pose<Real> p = pose_at<Real>(w.motion[o], static_cast<double>(s) * w.dt);
-      w.pose[o] = p;
-      if (o < w.polygon_count) w.polygons[o] = moved(w.polygon_ref[o], p);
-      else if (o < w.polygon_count + w.cylinder_count) w.cylinders[o - w.polygon_count] = moved(w.cylinder_ref[o - w.polygon_count], p);
+      // Everything the object needs is read before anything is written (the reads overlap: this
+      // phase is one thread's chain of latencies per object).
+      const std::uint64_t s = w.step[o] + 1;
+      const Motion m = w.motion[o];
+      if (o < w.polygon_count) {
+        const PlanarPolygon<Real> ref = w.polygon_ref[o];
+        const Pose<Real> p = place(o, s, m);
+        w.polygons[o] = moved(ref, p);
+      } else if (o < w.polygon_count + w.cylinder_count) {
+        const Cylinder<Real> ref = w.cylinder_ref[o - w.polygon_count];
+        const Pose<Real> p = place(o, s, m);
+        w.cylinders[o - w.polygon_count] = moved(ref, p);
+      } else {
+        place(o, s, m);
+      }
     }
+  }
+
+ private:
+  // Object o's pose at step s, written with the step.
+  BLAZE_HD Pose<Real> place(long o, std::uint64_t s, const Motion& m) const {
+    const Pose<Real> p = pose_at<Real>(m, static_cast<double>(s) * w.dt);
+    w.step[o] = s;
+    w.pose[o] = p;
+    return p;
   }
 };
 

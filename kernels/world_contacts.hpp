@@ -1,8 +1,9 @@
 // A particle's contacts with the world, object by object in index order (the world kernel and
 // the stored-energy diagnostic walk them the same way):
 //   f(geometry, material, w, key, group)
-// for every object w present that the particle may touch (WorldView::visit): a polygon or a
-// cylinder gives the shape's collide_world() (touching or not), key w and a null group; a triangle
+// for every object w that the particle may touch (WorldView::visit), unless it touches a removed
+// one: a polygon or a cylinder gives the shape's collide_world() (touching or not), key w and a
+// null group; a triangle
 // mesh gives each of its merged contacts (blaze/world/mesh_wall.hpp, at most kMeshContacts; from
 // the particle's triangle list when it has one, kernels/world_candidates.hpp),
 // key mesh_key_base + the triangle that offered it, and the group of them all (for the history's
@@ -31,12 +32,15 @@ BLAZE_HD void for_each_world_contact(const Shape& shape, const Body& body, const
   using Group = MeshGroup<WallGeometry<Shape, Body, Real>, Real>;
   world.visit(i, [&](const auto& object, int w) {
     if constexpr (std::is_same_v<std::decay_t<decltype(object)>, MeshObject<Real>>) {
+      if (!world.active(w)) return;  // a removed mesh
       Group group;
       shape.collide_mesh(body, world.surface, object, world.pose_of(w), group, world.near_triangles(i));
       for (int k = 0; k < group.count; ++k)
         f(group.contact[k], static_cast<int>(object.material), w, static_cast<WallKey>(world.mesh_key_base + group.owner[k]), &group);
     } else {
-      f(shape.collide_world(body, object), static_cast<int>(object.material), w, static_cast<WallKey>(w), static_cast<const Group*>(nullptr));
+      const auto g = shape.collide_world(body, object);
+      if (g.touching && !world.active(w)) return;  // a removed object (asked only of a touching one)
+      f(g, static_cast<int>(object.material), w, static_cast<WallKey>(w), static_cast<const Group*>(nullptr));
     }
   });
 }

@@ -84,6 +84,10 @@ template <class Real>
 BLAZE_HD inline ContactGeometry<Real> collide_sphere(const Vec3<Real>& x, Real r, const PlanarPolygon<Real>& w) {
   const Real d = dot(x - w.centroid, w.normal);
   if (!(d < r && d > -r)) return ContactGeometry<Real>::none();  // bounding-sphere test (line 2)
+  // Beyond the polygon's own bounding sphere (a lifter face whose plane crosses the particle far
+  // from the face): no vertex read.
+  const Real reach = r + w.bound;
+  if (norm2(x - w.centroid) > reach * reach) return ContactGeometry<Real>::none();
   const Vec3<Real> q = x - d * w.normal;
   bool inside = true;
   Real best2 = Real(0);

@@ -176,8 +176,10 @@ struct WorldView {
   BLAZE_HD ContactClass class_of(int w) const { return object_class ? object_class[w] : ContactClass::wall; }
   BLAZE_HD bool active(int w) const { return pose[w].active; }
   BLAZE_HD const Pose<Real>* pose_of(int w) const { return pose + w; }
-  // f(object, w) for each object present (not removed) that particle i may touch: its world list,
-  // or every object; in object index order (polygons, cylinders, meshes) either way.
+  // f(object, w) for each object that particle i may touch, present or removed (f asks active(w)
+  // where it matters: after a polygon's or cylinder's own test, which a removed object's flag
+  // would otherwise hold up by a memory latency): its world list, or every object; in object
+  // index order (polygons, cylinders, meshes) either way.
   template <class F>
   BLAZE_HD void visit(Index i, F&& f) const {
     if (candidate) {
@@ -185,7 +187,6 @@ struct WorldView {
       if (c != kWorldCandidatesOverflow) {
         for (int k = 0; k < c; ++k) {
           const int w = candidate[static_cast<std::size_t>(k) * candidate_stride + i];
-          if (!active(w)) continue;
           if (w < polygon_count) f(polygons[w], w);
           else if (w < polygon_count + cylinder_count) f(cylinders[w - polygon_count], w);
           else f(meshes[w - polygon_count - cylinder_count], w);
@@ -194,12 +195,9 @@ struct WorldView {
       }
     }
     int w = 0;
-    for (int k = 0; k < polygon_count; ++k, ++w)
-      if (active(w)) f(polygons[k], w);
-    for (int k = 0; k < cylinder_count; ++k, ++w)
-      if (active(w)) f(cylinders[k], w);
-    for (int k = 0; k < mesh_count; ++k, ++w)
-      if (active(w)) f(meshes[k], w);
+    for (int k = 0; k < polygon_count; ++k, ++w) f(polygons[k], w);
+    for (int k = 0; k < cylinder_count; ++k, ++w) f(cylinders[k], w);
+    for (int k = 0; k < mesh_count; ++k, ++w) f(meshes[k], w);
   }
 };
 
