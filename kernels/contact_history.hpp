@@ -137,16 +137,18 @@ struct WallHistoryView {
 };
 
 // After a rebuild: new entry (k, i) takes the state of the entry of the same pair in the previous
-// list (row order[i], partner order[j]) or zero; one field, from `in` (previous layout) to `out`.
+// list (row order[i], partner order[j]) or zero; fields in[f] (previous layout) to out[f], each
+// found entry read for every field (the search, the costly part, once for them all).
 // Pairs evaluated once (`once`) keep the state at the lower index's entry only, and a re-sort may
 // swap which of the two is lower: the owner's entry then takes the other side's old state,
 // negated (the two sides' states are exact negations), and the other entry is zero.
-template <class Real>
+template <class Real, int N>
 struct RemapPairHistory {
   NeighbourView list, previous;
   const Index* order;  // particle i of the new order was particle order[i] of the previous one
-  const Real* in;
-  Real* out;
+  const Real* in[N];   // fields in[0, fields) carried to out[0, fields): one search per entry for all
+  Real* out[N];
+  int fields;
   bool once;
 
   // The previous entry of row `row` for partner `partner`, or -1. The search starts at `from`
@@ -170,24 +172,26 @@ struct RemapPairHistory {
     const Index o = order[i];
     const Index count = min_r(list.count[i], list.capacity);
     if (o >= previous.stride) {
-      for (Index k = 0; k < count; ++k) out[list.offset(k, i)] = Real(0);
+      for (Index k = 0; k < count; ++k)
+        for (int f = 0; f < fields; ++f) out[f][list.offset(k, i)] = Real(0);
       return;
     }
     Index from = 0;  // the cursor in i's own previous row
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
       const Index was = order[j];
-      Real v = 0;
+      long e = -1;     // the contact's previous entry
+      bool flip = false;  // held by the other side before (pairs once): the state negated
       if (was >= previous.stride) {  // a new partner
       } else if (!once) {
-        const long e = find(o, was, from);
-        if (e >= 0) v = in[e];
+        e = find(o, was, from);
       } else if (i < j) {  // the owner now; it was the owner before iff o < was
         Index elsewhere = 0;
-        const long e = o < was ? find(o, was, from) : find(was, o, elsewhere);
-        if (e >= 0) v = o < was ? in[e] : -in[e];
+        e = o < was ? find(o, was, from) : find(was, o, elsewhere);
+        flip = !(o < was);
       }
-      out[list.offset(k, i)] = v;
+      const std::size_t s = list.offset(k, i);
+      for (int f = 0; f < fields; ++f) out[f][s] = e < 0 ? Real(0) : flip ? -in[f][e] : in[f][e];
     }
   }
 };

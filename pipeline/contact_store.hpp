@@ -7,8 +7,9 @@
 // snapshot keys them by permanent particle ids (and the object), so a restart rebuilds them
 // whatever the memory order.
 //
-// Memory per particle: the list's capacity x `used` reals (pairs) plus a scratch field of the same
-// size for the remap, and slots x (used reals + 4 B) for walls; none for a law without history.
+// Memory per particle: the list's capacity x `used` reals (pairs) plus spare fields of the same
+// size for the remap (one for large systems, all `used` while they fit in 32 MiB), and slots x
+// (used reals + 4 B) for walls; none for a law without history.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -69,10 +70,20 @@ class ContactStore {
   void after_rebuild(const NeighbourView& list, const NeighbourView& previous, const Index* order, Index n, bool once) {
     if (!active()) return;
     const std::size_t entries = static_cast<std::size_t>(list.capacity) * static_cast<std::size_t>(list.stride);
-    for (int c = 0; c < used_; ++c) {
-      scratch_.resize(std::max(scratch_.size(), entries));
-      for_each(Space{}, n, RemapPairHistory<Real>{list, previous, order, pair_[c].data(), scratch_.data(), once});
-      pair_[c].swap(scratch_);
+    // As many fields a launch as kSpareBytes of spare fields hold (all of them for small systems:
+    // one search of the previous list per entry instead of one per field; one at a time for large).
+    const std::size_t fit = kSpareBytes / std::max<std::size_t>(1, entries * sizeof(Real));
+    const int per_launch = static_cast<int>(std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(used_)));
+    if (static_cast<int>(scratch_.size()) < per_launch) scratch_.resize(static_cast<std::size_t>(per_launch));
+    for (int c = 0; c < used_; c += per_launch) {
+      RemapPairHistory<Real, kFields> remap{list, previous, order, {}, {}, std::min(per_launch, used_ - c), once};
+      for (int f = 0; f < remap.fields; ++f) {
+        auto& spare = scratch_[static_cast<std::size_t>(f)];
+        spare.resize(std::max(spare.size(), entries));
+        remap.in[f] = pair_[c + f].data(), remap.out[f] = spare.data();
+      }
+      for_each(Space{}, n, remap);
+      for (int f = 0; f < remap.fields; ++f) pair_[c + f].swap(scratch_[static_cast<std::size_t>(f)]);
     }
     // Wall slots: grown by one when a contact found none free since the last rebuild.
     const int grow = n > 0 && stride_ > 0 && reduce_max(Space{}, std::min(n, stride_), ValueOf<std::uint8_t>{overflow_.data()}, 0) > 0;
@@ -85,7 +96,8 @@ class ContactStore {
   }
 
   std::size_t bytes() const {
-    std::size_t b = scratch_.size() * sizeof(Real) + wall_object_.size() * sizeof(WallKey) + overflow_.size();
+    std::size_t b = wall_object_.size() * sizeof(WallKey) + overflow_.size();
+    for (const auto& f : scratch_) b += f.size() * sizeof(Real);
     for (int c = 0; c < kFields; ++c) b += (pair_[c].size() + wall_[c].size()) * sizeof(Real);
     return b + scratch_rows_.size() * sizeof(Real) + scratch_objects_.size() * sizeof(WallKey);
   }
@@ -209,7 +221,9 @@ class ContactStore {
   int used_ = 0, objects_ = 0, slots_ = 0;
   Index stride_ = 0;  // the wall rows' stride (particles at the last rebuild)
   Buffer<Real, Space> pair_[kFields], wall_[kFields];
-  Buffer<Real, Space> scratch_, scratch_rows_;
+  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;  // the remap's spare fields (one at least)
+  std::vector<Buffer<Real, Space>> scratch_;                          // the remap's spare fields
+  Buffer<Real, Space> scratch_rows_;
   Buffer<WallKey, Space> wall_object_, scratch_objects_;
   Buffer<std::uint8_t, Space> overflow_;
 };
