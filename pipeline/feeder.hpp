@@ -41,87 +41,10 @@
 #include "blaze/core/counter_random.hpp"
 #include "blaze/scene/scene.hpp"
 #include "blaze/scene/scene_build.hpp"
+#include "blaze/scene/sphere_grid.hpp"
 #include "blaze/scene/world_overlap.hpp"
 
 namespace blaze {
-
-// The particles a feeder must keep clear of, in a flat grid over the box it places in (cells of
-// the largest diameter, each a linked list through `next_`): an overlap test reads the 27 cells
-// around a centre, and nothing is allocated per particle beyond its entry (an unordered_map of
-// cells cost ~1 us per placement, 10% of a 1e6-particle feed's run). Entries are numbered;
-// overlapping(x, r, before) sees only those below `before`, whatever their order in a cell's list,
-// so put() may fill numbered entries from many threads at once (each links itself into its cell
-// with an atomic exchange) and the tests give the same answers on any number of threads. Tests are
-// const and may run on many threads at once, but not while entries are being put.
-class PlacementGrid {
- public:
-  PlacementGrid(const Vec3<double>& lo, const Vec3<double>& hi, double cell) : lo_(lo), hi_(hi), cell_(cell) {
-    const Vec3<double> span = hi - lo;
-    // at most 2^22 cells (16 MiB of heads): a huge region takes coarser cells (correct, slower)
-    for (size_ = cell;; size_ *= 1.25) {
-      n_[0] = 1 + static_cast<long>(span.x / size_), n_[1] = 1 + static_cast<long>(span.y / size_), n_[2] = 1 + static_cast<long>(span.z / size_);
-      if (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) <= 4194304.0) break;
-    }
-    head_.assign(static_cast<std::size_t>(n_[0] * n_[1] * n_[2]), -1);
-  }
-  // Was it made for this box and cell?
-  bool covers(const Vec3<double>& lo, const Vec3<double>& hi, double cell) const {
-    return lo.x == lo_.x && lo.y == lo_.y && lo.z == lo_.z && hi.x == hi_.x && hi.y == hi_.y && hi.z == hi_.z && cell == cell_;
-  }
-  // Does a sphere (x, r) overlap an entry below `before` (by more than 0)? Centres outside the box
-  // clamp to its border cells: the box holds every centre added, so none is missed.
-  bool overlapping(const Vec3<double>& x, double r, long before = kAll) const {
-    long c[3];
-    cell_of(x, c);
-    for (long i = std::max(0L, c[0] - 1); i <= std::min(n_[0] - 1, c[0] + 1); ++i)
-      for (long j = std::max(0L, c[1] - 1); j <= std::min(n_[1] - 1, c[1] + 1); ++j)
-        for (long k = std::max(0L, c[2] - 1); k <= std::min(n_[2] - 1, c[2] + 1); ++k)
-          for (std::int32_t e = head_[static_cast<std::size_t>((i * n_[1] + j) * n_[2] + k)]; e >= 0; e = next_[static_cast<std::size_t>(e)]) {
-            if (e >= before) continue;
-            const Entry& q = entry_[static_cast<std::size_t>(e)];
-            const double reach = r + q.r, dx = x.x - q.x, dy = x.y - q.y, dz = x.z - q.z;
-            if (dx * dx + dy * dy + dz * dz < reach * reach) return true;
-          }
-    return false;
-  }
-  // Entries 0 .. n-1 exist from here on (those beyond the old size to be put() before a test).
-  void resize(std::size_t n) { next_.resize(n), at_.resize(n), entry_.resize(n); }
-  std::size_t size() const { return entry_.size(); }
-  // Entry e (below size()) is the sphere (x, r); safe from many threads for distinct e.
-  void put(std::size_t e, const Vec3<double>& x, double r) {
-    long c[3];
-    cell_of(x, c);
-    const std::size_t at = static_cast<std::size_t>((c[0] * n_[1] + c[1]) * n_[2] + c[2]);
-    at_[e] = at, entry_[e] = Entry{x.x, x.y, x.z, r};
-    next_[e] = __atomic_exchange_n(&head_[at], static_cast<std::int32_t>(e), __ATOMIC_RELAXED);
-  }
-  void add(const Vec3<double>& x, double r) {
-    resize(size() + 1);
-    put(size() - 1, x, r);
-  }
-  // Empties it, touching only the cells in use.
-  void clear() {
-    for (const std::size_t at : at_) head_[at] = -1;
-    resize(0);
-  }
-  static constexpr long kAll = 0x7fffffffL;
-
- private:
-  struct Entry {
-    double x, y, z, r;  // m: an entry's centre and radius, in one cache line's half
-  };
-  void cell_of(const Vec3<double>& x, long* c) const {
-    const double v[3] = {x.x - lo_.x, x.y - lo_.y, x.z - lo_.z};
-    for (int d = 0; d < 3; ++d) c[d] = std::clamp(static_cast<long>(std::floor(v[d] / size_)), 0L, n_[d] - 1);
-  }
-  Vec3<double> lo_, hi_;
-  double cell_ = 0;  // m, the cell asked for
-  double size_ = 0;  // m, a cell's edge
-  long n_[3];
-  std::vector<std::int32_t> head_, next_;
-  std::vector<std::size_t> at_;  // each entry's cell
-  std::vector<Entry> entry_;
-};
 
 template <class Real>
 class Feeder {
@@ -177,15 +100,19 @@ class Feeder {
     const Vec3<double> margin{reach, reach, reach};
     sim.particles_in_box(lo - margin, hi + margin, centre, radius);
     // the grids persist between insertions (emptied, not reallocated) while the box stays the same
-    if (!occupied_ || !occupied_->covers(lo - margin, hi + margin, reach)) {
-      occupied_.emplace(lo - margin, hi + margin, reach);
-      fresh_.emplace(lo - margin, hi + margin, reach);
+    // (what it keeps clear of: the box holds every centre put, so puts may run on many threads
+    // while its cells are an array; cells of the largest diameter, 27 a query)
+    const double r_max = static_cast<double>(sim.max_radius());
+    if (!occupied_ || !occupied_->covers(lo - margin, hi + margin, reach, r_max)) {
+      occupied_.emplace(lo - margin, hi + margin, reach, r_max);
+      fresh_.emplace(lo - margin, hi + margin, reach, r_max);
     }
-    PlacementGrid &occupied = *occupied_, &fresh = *fresh_;
+    SphereGrid &occupied = *occupied_, &fresh = *fresh_;
+    const bool concurrent = occupied.concurrent_puts();
     occupied.clear();
     occupied.resize(centre.size());
     const long present = static_cast<long>(centre.size());
-#pragma omp parallel for schedule(static) if (present > parallel_round_)
+#pragma omp parallel for schedule(static) if (concurrent && present > parallel_round_)
     for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
     const auto found_at = std::chrono::steady_clock::now();
     // Rounds of parallel random sequential addition: every particle still open draws centres
@@ -209,7 +136,7 @@ class Feeder {
         const double r = pending_[static_cast<std::size_t>(open[j])];
         for (int t = 0; t < kDrawsPerRound && !ok[j]; ++t) {
           x[j] = spec_.region.draw(e, r);
-          ok[j] = inside_domain(x[j], r) && !occupied.overlapping(x[j], r) && !world_.blocked(x[j], r, no_vertices);
+          ok[j] = inside_domain(x[j], r) && occupied.overlapping(x[j], r) < 0 && !world_.blocked(x[j], r, no_vertices);
         }
       }
       draws_ += static_cast<std::uint64_t>(m);
@@ -220,12 +147,12 @@ class Feeder {
         if (ok[j]) entry[static_cast<std::size_t>(j)] = passed++;
       fresh.clear();
       fresh.resize(static_cast<std::size_t>(passed));
-#pragma omp parallel for schedule(static) if (m > parallel_round_)
+#pragma omp parallel for schedule(static) if (concurrent && m > parallel_round_)
       for (long j = 0; j < m; ++j)
         if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
 #pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
       for (long j = 0; j < m; ++j)
-        if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], entry[j])) ok[j] = 0;
+        if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], 0, entry[j]) >= 0) ok[j] = 0;
       // the kept join the particles present (numbered after them, in candidate order)
       still.clear();
       const std::size_t base = occupied.size();
@@ -234,7 +161,7 @@ class Feeder {
         if (ok[j]) entry[static_cast<std::size_t>(j)] = kept++;
         else still.push_back(open[j]);
       occupied.resize(base + static_cast<std::size_t>(kept));
-#pragma omp parallel for schedule(static) if (m > parallel_round_)
+#pragma omp parallel for schedule(static) if (concurrent && m > parallel_round_)
       for (long j = 0; j < m; ++j) {
         if (!ok[j]) continue;
         const std::size_t k = static_cast<std::size_t>(open[j]);
@@ -464,7 +391,7 @@ class Feeder {
   long insertions_ = 0, rounds_ = 0;
   long parallel_round_ = kParallelRound;
   std::vector<double> delivered_;  // m, every delivered radius (polyhedra: the bounding radius)
-  std::optional<PlacementGrid> occupied_, fresh_;  // not state: placement's grids, kept between insertions
+  std::optional<SphereGrid> occupied_, fresh_;  // not state: placement's grids, kept between insertions
   struct Scratch {  // not state: placement's buffers, kept between insertions
     std::vector<Vec3<double>> centre, at, x;
     std::vector<double> radius, left;

@@ -12,11 +12,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <random>
-#include <unordered_map>
 #include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/laws/standard_laws.hpp"
 #include "blaze/scene/critical_step.hpp"
 #include "blaze/scene/run_size.hpp"
+#include "blaze/scene/sphere_grid.hpp"
 #include "blaze/scene/world_overlap.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "blaze/world/world.hpp"
@@ -124,79 +124,6 @@ PolyhedronTable<Real> build_shape_table(const Scene& s, const std::vector<Convex
 
 namespace scene_detail {
 
-// Bounding spheres placed so far (none larger than r_max), in cells 4 r_max wide for overlap
-// queries: a query of radius r <= r_max reaches r + r_max <= half a cell, so it looks into 8 cells
-// at most. Each cell heads a chain of its spheres (newest first, through next_); the cells over
-// the domain are an array, any beyond it (a placement outside the domain) a hash map. (A hash map
-// of vectors for every cell, 27 cells a query, took half of a 4e6-ball fill's 100 s.)
-class Occupancy {
- public:
-  Occupancy(double r_max, const Vec3<double>& lo, const Vec3<double>& hi, double expected) : cell_(4 * r_max), r_max_(r_max), lo_(lo) {
-    const double e[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
-    double cells = 1;
-    for (int d = 0; d < 3; ++d) {
-      dims_[d] = e[d] > 0 ? static_cast<long>(std::floor(e[d] / cell_)) + 1 : 1;
-      cells *= static_cast<double>(dims_[d]);
-    }
-    // an array up to 4 cells a particle (or 4M cells): a domain far larger than the particles'
-    // room (tiny particles in a huge box) keeps to the hash map
-    if (cells <= std::fmax(4 * expected, 4194304.0)) head_.assign(static_cast<std::size_t>(cells), -1);
-    else dims_[0] = dims_[1] = dims_[2] = 0;
-  }
-  // Index of a placed sphere that overlaps (x, r) by more than `slack` (m), or -1.
-  long overlapping(const Vec3<double>& x, double r, double slack) const {
-    const double reach = r + r_max_;
-    const auto lo = cell_of(x - Vec3<double>{reach, reach, reach}), hi = cell_of(x + Vec3<double>{reach, reach, reach});
-    for (long cx = lo[0]; cx <= hi[0]; ++cx)
-      for (long cy = lo[1]; cy <= hi[1]; ++cy)
-        for (long cz = lo[2]; cz <= hi[2]; ++cz)
-          for (long j = first(cx, cy, cz); j >= 0; j = next_[static_cast<std::size_t>(j)]) {
-            const double touch = r + radius_[static_cast<std::size_t>(j)] - slack;
-            if (norm2(x - centre_[static_cast<std::size_t>(j)]) < touch * touch) return j;
-          }
-    return -1;
-  }
-  void add(const Vec3<double>& x, double r) {
-    const auto c = cell_of(x);
-    const long j = static_cast<long>(centre_.size());
-    long* h = dense(c[0], c[1], c[2]);
-    long& head = h ? *h : far_.try_emplace(key(c[0], c[1], c[2]), -1).first->second;
-    next_.push_back(head);
-    head = j;
-    centre_.push_back(x);
-    radius_.push_back(r);
-  }
-
- private:
-  std::array<long, 3> cell_of(const Vec3<double>& x) const {
-    return {static_cast<long>(std::floor((x.x - lo_.x) / cell_)), static_cast<long>(std::floor((x.y - lo_.y) / cell_)),
-            static_cast<long>(std::floor((x.z - lo_.z) / cell_))};
-  }
-  long* dense(long i, long j, long k) {
-    if (i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] || k >= dims_[2]) return nullptr;
-    return &head_[static_cast<std::size_t>((k * dims_[1] + j) * dims_[0] + i)];
-  }
-  long first(long i, long j, long k) const {
-    if (i >= 0 && j >= 0 && k >= 0 && i < dims_[0] && j < dims_[1] && k < dims_[2])
-      return head_[static_cast<std::size_t>((k * dims_[1] + j) * dims_[0] + i)];
-    if (far_.empty()) return -1;
-    const auto it = far_.find(key(i, j, k));
-    return it == far_.end() ? -1 : it->second;
-  }
-  static std::uint64_t key(long i, long j, long k) {
-    return (static_cast<std::uint64_t>(i & 0x1fffff) << 42) | (static_cast<std::uint64_t>(j & 0x1fffff) << 21) |
-           static_cast<std::uint64_t>(k & 0x1fffff);
-  }
-  double cell_, r_max_;
-  Vec3<double> lo_;
-  long dims_[3] = {0, 0, 0};
-  std::vector<long> head_;                          // the domain's cells: first sphere, or -1
-  std::unordered_map<std::uint64_t, long> far_;     // cells beyond the domain (21 bits an axis, wrapped)
-  std::vector<long> next_;                          // the next sphere of the same cell, or -1
-  std::vector<Vec3<double>> centre_;
-  std::vector<double> radius_;
-};
-
 // Set-up of large scenes reports its progress on stderr (a 1e9-particle fill takes minutes): every
 // few seconds, from 1e6 particles on.
 class SetupProgress {
@@ -229,11 +156,11 @@ Quat<double> random_orientation(Rng& rng) {
 // `shapes` is the scene's shape table for polyhedral scenes, null for spheres.
 template <class Real>
 ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>* shapes) {
-  using scene_detail::Occupancy;
   double r_max = 0;
   for (const auto& t : s.types) r_max = std::max(r_max, t.size());
   const double total = scene_particles(s);
-  Occupancy placed(r_max, s.domain_lo, s.domain_hi, total);
+  // cells 4 r_max wide: a query reaches r + r_max <= half a cell, 8 cells at most
+  SphereGrid placed(s.domain_lo, s.domain_hi, r_max > 0 ? 4 * r_max : 1.0, r_max, total);
   std::vector<std::string> origin;  // which placement each particle came from, for messages
   std::mt19937_64 rng(s.seed);
   ParticleState<Real> out;
