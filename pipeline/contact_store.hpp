@@ -65,6 +65,11 @@ class ContactStore {
     lay_walls(n);
   }
 
+  // The most bytes the remap's spare fields hold (one field at least): with room for all of them
+  // the remap is one launch, without it a launch per field (kSpareBytes by default).
+  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;
+  void limit_spares(std::size_t bytes) { spare_bytes_ = bytes; }
+
   // After a rebuild (sort, removal, new list): carry every state to its contact's new place.
   // once: pairs evaluated once (the lower index's entry holds the state).
   void after_rebuild(const NeighbourView& list, const NeighbourView& previous, const Index* order, Index n, bool once) {
@@ -72,7 +77,7 @@ class ContactStore {
     const std::size_t entries = static_cast<std::size_t>(list.capacity) * static_cast<std::size_t>(list.stride);
     // As many fields a launch as kSpareBytes of spare fields hold (all of them for small systems:
     // one search of the previous list per entry instead of one per field; one at a time for large).
-    const std::size_t fit = kSpareBytes / std::max<std::size_t>(1, entries * sizeof(Real));
+    const std::size_t fit = spare_bytes_ / std::max<std::size_t>(1, entries * sizeof(Real));
     const int per_launch = static_cast<int>(std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(used_)));
     if (static_cast<int>(scratch_.size()) < per_launch) scratch_.resize(static_cast<std::size_t>(per_launch));
     for (int c = 0; c < used_; c += per_launch) {
@@ -221,8 +226,8 @@ class ContactStore {
   int used_ = 0, objects_ = 0, slots_ = 0;
   Index stride_ = 0;  // the wall rows' stride (particles at the last rebuild)
   Buffer<Real, Space> pair_[kFields], wall_[kFields];
-  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;  // the remap's spare fields (one at least)
-  std::vector<Buffer<Real, Space>> scratch_;                          // the remap's spare fields
+  std::size_t spare_bytes_ = kSpareBytes;     // limit_spares()
+  std::vector<Buffer<Real, Space>> scratch_;  // the remap's spare fields
   Buffer<Real, Space> scratch_rows_;
   Buffer<WallKey, Space> wall_object_, scratch_objects_;
   Buffer<std::uint8_t, Space> overflow_;

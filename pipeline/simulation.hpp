@@ -486,6 +486,13 @@ class Simulation {
     copy_n(nl.index, h.index.size(), h.index.data(), Space{}, Host{});
     return h;
   }
+  // The most bytes a rebuild's spare arrays may hold, in the particle store and in the contact
+  // store each (32 MiB by default; 0: one array a launch, the least memory): the reorder moves
+  // as many arrays a launch as they have room for. The results are the same either way.
+  void limit_spares(std::size_t bytes) {
+    store_.limit_spares(bytes);
+    contacts_.limit_spares(bytes);
+  }
   // Mean neighbour-list length (benchmarks; reads only the counts).
   double mean_neighbours() {
     const NeighbourView nl = broad_.neighbours();

@@ -3,7 +3,8 @@
 // 10^4 spheres, several seeds), on every backend this binary runs. Plus: the cell hash is
 // one-to-one (the thesis's eq. 2.1 is not), the radix sort is a stable sort, particles that
 // leave the domain are removed and counted, and the reverse index (pairs evaluated once) points
-// each entry back and reports a list that is not symmetric.
+// each entry back and reports a list that is not symmetric; a rebuild's reorder moves every
+// array with its particle, in one launch or several.
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
@@ -152,6 +153,53 @@ BOOST_AUTO_TEST_CASE(particles_leaving_the_domain_are_removed_and_counted) {
   BOOST_TEST(sim.size() == 7);
   BOOST_TEST(sim.removed_mass() == mass_out, boost::test_tools::tolerance(tol::mass_sum_double));
   for (Index id : sim.state().id) BOOST_TEST(id >= 3);
+}
+
+// A rebuild's reorder (ParticleStore::permute) moves every array with its particle, all in one
+// launch (room for the spares) or a few at a time (limit_spares): after it, each field of
+// particle i is what particle perm[i] had; force and torque move only when asked.
+BOOST_AUTO_TEST_CASE(a_reorder_moves_every_array_with_its_particle) {
+  const std::size_t n = 500;
+  ParticleState<double> s;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = static_cast<double>(i);
+    s.add_sphere({a, 2 * a, 3 * a}, 0.01 + 1e-5 * a, 2500 + a, static_cast<std::uint8_t>(i % 3), {-a, a + 0.5, a + 0.25});
+    s.angular_velocity.back() = {a + 0.1, a + 0.2, a + 0.3};
+    s.orientation.back() = normalized(Quat<double>{1, 1e-3 * a, 0, 0});
+    s.type.back() = static_cast<std::uint8_t>(i % 5);
+  }
+  std::vector<Index> perm(n);
+  for (std::size_t i = 0; i < n; ++i) perm[i] = static_cast<Index>((i * 7 + 3) % n);  // 7 and 500 coprime: a permutation
+  Buffer<Index, DefaultSpace> order;
+  from_host(order, perm);
+  const std::size_t one = n * sizeof(double);
+  for (const std::size_t spare : {ParticleStore<double, DefaultSpace>::kSpareBytes, std::size_t{0}, 3 * one})
+    for (const bool with_forces : {false, true}) {
+      ParticleStore<double, DefaultSpace> store;
+      store.upload(s, true, true, true, true);  // every optional array kept
+      store.limit_spares(spare);
+      const auto before = store.snapshot();
+      store.permute(order.data(), with_forces);
+      const auto after = store.snapshot();
+      BOOST_TEST_REQUIRE(after.reals.size() == before.reals.size());
+      int moved = 0;
+      for (std::size_t f = 0; f < before.reals.size(); ++f) {
+        if (before.reals[f].empty()) continue;
+        const bool force = f >= 9 && f < 15;  // force and torque (real_fields() order)
+        bool same = true;
+        for (std::size_t i = 0; i < n; ++i)
+          same = same && after.reals[f][i] == before.reals[f][force && !with_forces ? i : static_cast<std::size_t>(perm[i])];
+        BOOST_TEST(same, "field " << f << ", spares " << spare << " B");
+        moved += !force;
+      }
+      BOOST_TEST(moved >= 25);  // position, velocity, spin, a(t), T(t), orientation, radius, mass, inertia, ...
+      bool same = true;
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto j = static_cast<std::size_t>(perm[i]);
+        same = same && after.id[i] == before.id[j] && after.material[i] == before.material[j] && after.type[i] == before.type[j];
+      }
+      BOOST_TEST(same);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

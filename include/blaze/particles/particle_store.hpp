@@ -358,6 +358,10 @@ class ParticleStore {
   // Puts particle perm[i] at position i in every field that carries state across steps.
   // Force and torque are recomputed before they are read, so they are moved only on request (a
   // rebuild between steps, for a checkpoint).
+  // The most bytes that permute()'s spare arrays hold (one array at least): with room for all of
+  // them a reorder is one launch, without it a launch per array (kSpareBytes by default).
+  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;
+  void limit_spares(std::size_t bytes) { spare_bytes_ = bytes; }
   void permute(const Index* perm, bool with_forces = false) {
     std::vector<Buffer<Real, Space>*> reals;
     for (auto* f : real_fields()) {
@@ -449,14 +453,13 @@ class ParticleStore {
     copy_n(src.data(), n, dst.data(), Space{}, Space{});
   }
   // Each of `fields` becomes fields[perm] over [0, n_), as many per launch as the spare arrays
-  // allow: all of them while one array holds no more than kSpareBytes / kMaxFields, fewer beyond,
-  // one at a time from kSpareBytes an array on (8.4e6 particles in float): the spares hold about
-  // kSpareBytes, or one array.
-  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;
+  // allow: all of them while one array holds no more than spare_bytes_ / kMaxFields, fewer beyond,
+  // one at a time from spare_bytes_ an array on (8.4e6 particles in float by default): the spares
+  // hold about spare_bytes_, or one array.
   template <class T>
   void gather_fields(const std::vector<Buffer<T, Space>*>& fields, std::vector<Buffer<T, Space>>& spare, const Index* perm) {
     const std::size_t each = std::max<std::size_t>(1, static_cast<std::size_t>(n_) * sizeof(T));
-    const std::size_t per_launch = std::clamp<std::size_t>(kSpareBytes / each, 1, GatherFields<T>::kMaxFields);
+    const std::size_t per_launch = std::clamp<std::size_t>(spare_bytes_ / each, 1, GatherFields<T>::kMaxFields);
     if (spare.size() < std::min(per_launch, fields.size())) spare.resize(std::min(per_launch, fields.size()));
     for (std::size_t a = 0; a < fields.size(); a += per_launch) {
       const std::size_t m = std::min(per_launch, fields.size() - a);
@@ -486,6 +489,7 @@ class ParticleStore {
   Buffer<std::uint8_t, Space> material_, type_;
   Buffer<Index, Space> id_;
   Buffer<Index, Space> image_[3];  // periodic runs: image counts per axis (keep_images())
+  std::size_t spare_bytes_ = kSpareBytes;  // limit_spares()
   // permute()'s spare arrays (gather_fields)
   std::vector<Buffer<Real, Space>> spare_real_;
   std::vector<Buffer<std::uint8_t, Space>> spare_u8_;
