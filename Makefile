@@ -49,6 +49,9 @@ LDFLAGS_cpu := -fopenmp $(SAN_FLAGS)
 NVCCFLAGS := -std=c++17 -O3 -arch=$(CUDA_ARCH) -Werror cross-execution-space-call,all-warnings -DEIGEN_NO_CUDA \
              -Xcompiler -fopenmp,$(subst $(space),$(comma),$(WARN)) -Iinclude -I. -isystem /usr/include/eigen3 -DBLAZE_TEST_HEADER_ONLY
 # NVCC_EXTRA=-lineinfo: source lines for the profiler (ncu's source view); no change to the code.
+# NVCC_EXTRA=-DBLAZE_FUSED_CLOCKS (profiling only, in its own BUILD=...): the small systems' one-block
+# kernel counts each phase's cycles and each warp's share; blaze_bench's mill cases print them
+# (include/blaze/exec/phases.hpp; bench/results/levers/small-mill-phases.md).
 NVCCFLAGS += $(NVCC_EXTRA)
 # The GPU machine has Boost headers but not its compiled libraries: CUDA builds use the header-only
 # Boost.Test, and studies plot only where gnuplot-iostream was found at build time.
