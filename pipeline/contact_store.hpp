@@ -75,7 +75,7 @@ class ContactStore {
   void after_rebuild(const NeighbourView& list, const NeighbourView& previous, const Index* order, Index n, bool once) {
     if (!active()) return;
     const std::size_t entries = static_cast<std::size_t>(list.capacity) * static_cast<std::size_t>(list.stride);
-    // As many fields a launch as kSpareBytes of spare fields hold (all of them for small systems:
+    // As many fields a launch as spare_bytes_ of spare fields hold (all of them for small systems:
     // one search of the previous list per entry instead of one per field; one at a time for large).
     const std::size_t fit = spare_bytes_ / std::max<std::size_t>(1, entries * sizeof(Real));
     const int per_launch = static_cast<int>(std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(used_)));
