@@ -67,7 +67,6 @@ class ContactStore {
 
   // The most bytes the remap's spare fields hold (one field at least): with room for all of them
   // the remap is one launch, without it a launch per field (kSpareBytes by default).
-  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;
   void limit_spares(std::size_t bytes) { spare_bytes_ = bytes; }
 
   // After a rebuild (sort, removal, new list): carry every state to its contact's new place.
@@ -77,8 +76,8 @@ class ContactStore {
     const std::size_t entries = static_cast<std::size_t>(list.capacity) * static_cast<std::size_t>(list.stride);
     // As many fields a launch as spare_bytes_ of spare fields hold (all of them for small systems:
     // one search of the previous list per entry instead of one per field; one at a time for large).
-    const std::size_t fit = spare_bytes_ / std::max<std::size_t>(1, entries * sizeof(Real));
-    const int per_launch = static_cast<int>(std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(used_)));
+    const int per_launch = static_cast<int>(
+        arrays_per_launch(spare_bytes_, entries * sizeof(Real), static_cast<std::size_t>(used_), static_cast<std::size_t>(kFields)));
     if (static_cast<int>(scratch_.size()) < per_launch) scratch_.resize(static_cast<std::size_t>(per_launch));
     for (int c = 0; c < used_; c += per_launch) {
       RemapPairHistory<Real, kFields> remap{list, previous, order, {}, {}, std::min(per_launch, used_ - c), once};

@@ -173,7 +173,7 @@ BOOST_AUTO_TEST_CASE(a_reorder_moves_every_array_with_its_particle) {
   Buffer<Index, DefaultSpace> order;
   from_host(order, perm);
   const std::size_t one = n * sizeof(double);
-  for (const std::size_t spare : {ParticleStore<double, DefaultSpace>::kSpareBytes, std::size_t{0}, 3 * one})
+  for (const std::size_t spare : {kSpareBytes, std::size_t{0}, 3 * one})
     for (const bool with_forces : {false, true}) {
       ParticleStore<double, DefaultSpace> store;
       store.upload(s, true, true, true, true);  // every optional array kept

@@ -83,6 +83,15 @@ void from_host(Buffer<T, Space>& b, const std::vector<T>& v) {
   b.resize(v.size());
   copy_n(v.data(), v.size(), b.data(), Host{}, Space{});
 }
+// Arrays moved a launch when a rebuild reorders `count` arrays of `bytes_each` each into spare
+// arrays that may hold `spare_bytes` together (one at least, `most` at most): the particle store's
+// reorder and the contact store's remap. Small systems take all in one launch, large ones one at
+// a time (no more memory than one spare array).
+inline constexpr std::size_t kSpareBytes = std::size_t{32} << 20;
+inline std::size_t arrays_per_launch(std::size_t spare_bytes, std::size_t bytes_each, std::size_t count, std::size_t most) {
+  return std::clamp<std::size_t>(spare_bytes / std::max<std::size_t>(1, bytes_each), 1, std::max<std::size_t>(1, std::min(count, most)));
+}
+
 template <class T, class Space>
 T read_one(const T* p, Space) {
   T v;

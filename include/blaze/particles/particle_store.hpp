@@ -360,7 +360,6 @@ class ParticleStore {
   // rebuild between steps, for a checkpoint).
   // The most bytes that permute()'s spare arrays hold (one array at least): with room for all of
   // them a reorder is one launch, without it a launch per array (kSpareBytes by default).
-  static constexpr std::size_t kSpareBytes = std::size_t{32} << 20;
   void limit_spares(std::size_t bytes) { spare_bytes_ = bytes; }
   void permute(const Index* perm, bool with_forces = false) {
     std::vector<Buffer<Real, Space>*> reals;
@@ -458,9 +457,9 @@ class ParticleStore {
   // hold about spare_bytes_, or one array.
   template <class T>
   void gather_fields(const std::vector<Buffer<T, Space>*>& fields, std::vector<Buffer<T, Space>>& spare, const Index* perm) {
-    const std::size_t each = std::max<std::size_t>(1, static_cast<std::size_t>(n_) * sizeof(T));
-    const std::size_t per_launch = std::clamp<std::size_t>(spare_bytes_ / each, 1, GatherFields<T>::kMaxFields);
-    if (spare.size() < std::min(per_launch, fields.size())) spare.resize(std::min(per_launch, fields.size()));
+    const std::size_t per_launch = arrays_per_launch(spare_bytes_, static_cast<std::size_t>(n_) * sizeof(T), fields.size(),
+                                                     GatherFields<T>::kMaxFields);
+    if (spare.size() < per_launch) spare.resize(per_launch);
     for (std::size_t a = 0; a < fields.size(); a += per_launch) {
       const std::size_t m = std::min(per_launch, fields.size() - a);
       GatherFields<T> g{};
