@@ -62,8 +62,8 @@ class BroadPhase {
   Removed rebuild(ParticleStore<Real, Space>& store, PhaseTimer<Space>& timer, const Vec3<Real>& gravity,
                   bool with_forces = false) {
     const Index n = store.size();
-    keys_.resize(std::max<std::size_t>(keys_.size(), n));
-    order_.resize(std::max<std::size_t>(order_.size(), n));
+    keys_.ensure(n);
+    order_.ensure(n);
     timer.time("hash", [&] {
       if (grid_.periodic)  // back into the box along the periodic axes, counting the images
         for_each(Space{}, n, WrapPeriodic<Real>{grid_, store.view().position, {store.image(0), store.image(1), store.image(2)}});
@@ -147,25 +147,27 @@ class BroadPhase {
       previous_stride_ = stride_, previous_capacity_ = capacity_;
     }
     stride_ = p.n;
-    count_.resize(std::max<std::size_t>(count_.size(), p.n));
+    count_.ensure(p.n);
     for (;;) {
-      list_.resize(std::max<std::size_t>(list_.size(), static_cast<std::size_t>(capacity_) * p.n));
-      if (grid_.periodic) images_.resize(std::max(images_.size(), list_.size()));
+      list_.ensure(static_cast<std::size_t>(capacity_) * p.n);
+      if (grid_.periodic) images_.ensure(list_.size());
       for_each(Space{}, p.n,
                BuildNeighbours<Real>{grid_, p.position, p.radius, cell_start_.data(), cell_end_.data(), skin_,
                                      neighbours(), images()});
       const Index most = reduce_max(Space{}, p.n, ValueOf<Index>{count_.data()}, 0);
       if (most <= capacity_) break;
       capacity_ = most + most / 4 + 1;  // grow with headroom, rebuild
+      // exact (ensure's headroom is for a growing count)
+      if (list_.size() < static_cast<std::size_t>(capacity_) * p.n) list_.resize(static_cast<std::size_t>(capacity_) * p.n);
     }
     if (by_id_) for_each(Space{}, p.n, SortNeighboursById<Real>{neighbours(), images(), p.id});
     if (with_reverse_) {
-      reverse_.resize(std::max<std::size_t>(reverse_.size(), list_.size()));
+      reverse_.ensure(list_.size());
       if (reduce_max(Space{}, p.n, BuildReverse{neighbours()}, 0) > 0)
         throw std::logic_error("blaze broad phase: the neighbour list is not symmetric (some j does not list i back), "
                                "so pairs cannot be evaluated once; this is a bug, please report it");
     }
-    for (auto& c : reference_) c.resize(std::max<std::size_t>(c.size(), p.n));
+    for (auto& c : reference_) c.ensure(p.n);
     for_each(Space{}, p.n, CopyVec3<Real>{p.position, field(reference_)});
     ++builds_;
   }

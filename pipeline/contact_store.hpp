@@ -83,7 +83,7 @@ class ContactStore {
       RemapPairHistory<Real, kFields> remap{list, previous, order, {}, {}, std::min(per_launch, used_ - c), once};
       for (int f = 0; f < remap.fields; ++f) {
         auto& spare = scratch_[static_cast<std::size_t>(f)];
-        spare.resize(std::max(spare.size(), entries));
+        spare.ensure(entries);
         remap.in[f] = pair_[c + f].data(), remap.out[f] = spare.data();
       }
       for_each(Space{}, n, remap);
@@ -202,7 +202,7 @@ class ContactStore {
   }
   template <class T>
   static void fill(Buffer<T, Space>& b, std::size_t n, T value) {
-    b.resize(std::max(b.size(), n));
+    b.ensure(n);
     for_each(Space{}, static_cast<Index>(b.size()), Fill<T>{b.data(), value});
   }
   void lay_walls(Index n) {
@@ -215,7 +215,7 @@ class ContactStore {
   template <class T>
   void gather_rows(Buffer<T, Space>& b, const Index* order, Index n, int slots, T empty) {
     auto& scratch = scratch_for(T{});
-    scratch.resize(std::max(scratch.size(), static_cast<std::size_t>(slots) * n));
+    scratch.ensure(static_cast<std::size_t>(slots) * n);
     for_each(Space{}, n, GatherRows<T>{b.data(), scratch.data(), order, n, stride_, slots_, slots, empty});
     b.swap(scratch);
   }

@@ -109,66 +109,105 @@ class Feeder {
     }
     SphereGrid &occupied = *occupied_, &fresh = *fresh_;
     const bool concurrent = occupied.concurrent_puts();
+    const long present = static_cast<long>(centre.size());
+    open.resize(want);
+    for (std::size_t k = 0; k < want; ++k) open[k] = static_cast<long>(k);
+    at.resize(want), placed.assign(want, 0);
     occupied.clear();
     occupied.resize(centre.size());
-    const long present = static_cast<long>(centre.size());
-#pragma omp parallel for schedule(static) if (concurrent && present > parallel_round_)
-    for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
-    const auto found_at = std::chrono::steady_clock::now();
+    auto found_at = std::chrono::steady_clock::now();
     // Rounds of parallel random sequential addition: every particle still open draws centres
     // (its own counter-based stream: the same on any number of threads), kept when it is clear of
     // the particles present and placed, of the world and of the domain's faces, and of every
     // candidate of the round before it (so candidates need not be tested one by one). The open
     // ones draw again, up to kTries rounds; then the region counts as full until the next insertion.
-    // Only the numbering of a round's candidates runs on one thread.
-    open.resize(want);
-    for (std::size_t k = 0; k < want; ++k) open[k] = static_cast<long>(k);
-    at.resize(want), placed.assign(want, 0);
+    // One parallel region holds the binning and every round (the numbering of a round's
+    // candidates on one thread): a region per loop woke the team ~20 times an insertion, which
+    // took half the placement's time on a 16-core host (0.42 s of the 1e6-bead feed against 0.22 s
+    // with the threads kept spinning).
     const std::vector<Vec3<double>> no_vertices;
-    for (int round = 0; round < kTries && !open.empty(); ++round) {
-      ++rounds_;
-      const long m = static_cast<long>(open.size());
-      x.resize(open.size()), ok.assign(open.size(), 0);
-      // (rounds of a few hundred run on one thread: waking the team costs more than their tests)
-#pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
-      for (long j = 0; j < m; ++j) {
-        CounterEngine e(spec_.seed, draws_ + static_cast<std::uint64_t>(j));
-        const double r = pending_[static_cast<std::size_t>(open[j])];
-        for (int t = 0; t < kDrawsPerRound && !ok[j]; ++t) {
-          x[j] = spec_.region.draw(e, r);
-          ok[j] = inside_domain(x[j], r) && occupied.overlapping(x[j], r) < 0 && !world_.blocked(x[j], r, no_vertices);
+    long m = 0, passed = 0, kept = 0;
+    std::size_t base = 0;
+    bool done = false;
+#pragma omp parallel if (present + static_cast<long>(want) > parallel_round_)
+    {
+      if (concurrent) {
+#pragma omp for schedule(static)
+        for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
+      } else {
+#pragma omp single
+        for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
+      }
+#pragma omp single
+      found_at = std::chrono::steady_clock::now();
+      for (int round = 0; round < kTries; ++round) {
+#pragma omp single
+        {
+          done = open.empty();
+          if (!done) {
+            ++rounds_;
+            m = static_cast<long>(open.size());
+            x.resize(open.size()), ok.assign(open.size(), 0);
+          }
+        }
+        if (done) break;
+#pragma omp for schedule(dynamic, 256)
+        for (long j = 0; j < m; ++j) {
+          CounterEngine e(spec_.seed, draws_ + static_cast<std::uint64_t>(j));
+          const double r = pending_[static_cast<std::size_t>(open[j])];
+          for (int t = 0; t < kDrawsPerRound && !ok[j]; ++t) {
+            x[j] = spec_.region.draw(e, r);
+            ok[j] = inside_domain(x[j], r) && occupied.overlapping(x[j], r) < 0 && !world_.blocked(x[j], r, no_vertices);
+          }
+        }
+        // the candidates that passed, numbered in candidate order: a candidate's entry in `fresh`
+#pragma omp single
+        {
+          draws_ += static_cast<std::uint64_t>(m);
+          entry.assign(open.size(), -1);
+          passed = 0;
+          for (long j = 0; j < m; ++j)
+            if (ok[j]) entry[static_cast<std::size_t>(j)] = passed++;
+          fresh.clear();
+          fresh.resize(static_cast<std::size_t>(passed));
+          if (!concurrent)
+            for (long j = 0; j < m; ++j)
+              if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
+        }
+        if (concurrent) {
+#pragma omp for schedule(static)
+          for (long j = 0; j < m; ++j)
+            if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
+        }
+#pragma omp for schedule(dynamic, 256)
+        for (long j = 0; j < m; ++j)
+          if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], 0, entry[j]) >= 0) ok[j] = 0;
+        // the kept join the particles present (numbered after them, in candidate order)
+#pragma omp single
+        {
+          still.clear();
+          base = occupied.size();
+          kept = 0;
+          for (long j = 0; j < m; ++j)
+            if (ok[j]) entry[static_cast<std::size_t>(j)] = kept++;
+            else still.push_back(open[j]);
+          occupied.resize(base + static_cast<std::size_t>(kept));
+        }
+#pragma omp for schedule(static)
+        for (long j = 0; j < m; ++j) {
+          if (!ok[j]) continue;
+          const std::size_t k = static_cast<std::size_t>(open[j]);
+          if (concurrent) occupied.put(base + static_cast<std::size_t>(entry[j]), x[j], pending_[k]);
+          at[k] = x[j], placed[k] = 1;
+        }
+#pragma omp single
+        {
+          if (!concurrent)
+            for (long j = 0; j < m; ++j)
+              if (ok[j]) occupied.put(base + static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
+          open.swap(still);
         }
       }
-      draws_ += static_cast<std::uint64_t>(m);
-      // the candidates that passed, numbered in candidate order: a candidate's entry in `fresh`
-      entry.assign(open.size(), -1);
-      long passed = 0;
-      for (long j = 0; j < m; ++j)
-        if (ok[j]) entry[static_cast<std::size_t>(j)] = passed++;
-      fresh.clear();
-      fresh.resize(static_cast<std::size_t>(passed));
-#pragma omp parallel for schedule(static) if (concurrent && m > parallel_round_)
-      for (long j = 0; j < m; ++j)
-        if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
-#pragma omp parallel for schedule(dynamic, 256) if (m > parallel_round_)
-      for (long j = 0; j < m; ++j)
-        if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], 0, entry[j]) >= 0) ok[j] = 0;
-      // the kept join the particles present (numbered after them, in candidate order)
-      still.clear();
-      const std::size_t base = occupied.size();
-      long kept = 0;
-      for (long j = 0; j < m; ++j)
-        if (ok[j]) entry[static_cast<std::size_t>(j)] = kept++;
-        else still.push_back(open[j]);
-      occupied.resize(base + static_cast<std::size_t>(kept));
-#pragma omp parallel for schedule(static) if (concurrent && m > parallel_round_)
-      for (long j = 0; j < m; ++j) {
-        if (!ok[j]) continue;
-        const std::size_t k = static_cast<std::size_t>(open[j]);
-        occupied.put(base + static_cast<std::size_t>(entry[j]), x[j], pending_[k]);
-        at[k] = x[j], placed[k] = 1;
-      }
-      open.swap(still);
     }
     // the placed, in the order drawn; the rest stay pending, in order, for the next insertion
     std::vector<std::size_t>& chosen = scratch_.chosen;

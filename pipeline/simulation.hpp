@@ -438,28 +438,30 @@ class Simulation {
     store_.append(add);
     rebuild(true);
   }
-  // Centres and bounding radii of the particles whose centre lies in [lo, hi] (m): what a feeder
-  // must keep clear of. Found where the particles live (kernels/region_query.hpp); reads back a
-  // byte per particle and the centres found.
+  // Centres and bounding radii of the particles whose centre lies in [lo, hi] (m), in memory
+  // order: what a feeder must keep clear of. Found where the particles live, in parts
+  // (kernels/region_query.hpp): reads back a count a part and the centres found.
   void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre,
                         std::vector<double>& radius) {
     centre.clear(), radius.clear();
     const ParticleView<Real> p = store_.view();
-    const std::size_t n = static_cast<std::size_t>(p.n);
-    if (n == 0) return;
-    query_flags_.resize(std::max(query_flags_.size(), n));
-    for_each(Space{}, p.n, InBox<Real>{p.position, vec_cast<Real>(lo), vec_cast<Real>(hi), query_flags_.data()});
-    const std::vector<std::uint8_t> flags = to_host(query_flags_, n);
-    std::vector<Index> which;
-    for (std::size_t i = 0; i < n; ++i)
-      if (flags[i]) which.push_back(static_cast<Index>(i));
-    if (which.empty()) return;
-    from_host(query_which_, which);
-    query_out_.resize(std::max(query_out_.size(), 4 * which.size()));
-    for_each(Space{}, static_cast<Index>(which.size()), GatherCentres<Real>{p.position, p.radius, query_which_.data(), query_out_.data()});
-    const std::vector<Real> out = to_host(query_out_, 4 * which.size());
-    for (std::size_t k = 0; k < which.size(); ++k)
-      centre.push_back({out[4 * k], out[4 * k + 1], out[4 * k + 2]}), radius.push_back(out[4 * k + 3]);
+    if (p.n == 0) return;
+    const Index parts = std::min(p.n, kReduceParts<Space>);
+    query_count_.ensure(static_cast<std::size_t>(parts));
+    InBoxParts<Real> q{p.position, p.radius, vec_cast<Real>(lo), vec_cast<Real>(hi), p.n, parts, query_count_.data(), nullptr, nullptr};
+    for_each(Space{}, parts, q);
+    std::vector<Index> offset = to_host(query_count_, static_cast<std::size_t>(parts));
+    Index found = 0;
+    for (Index& c : offset) found += std::exchange(c, found);  // exclusive: each part's first
+    if (found == 0) return;
+    from_host(query_offset_, offset);
+    query_out_.ensure(4 * static_cast<std::size_t>(found));
+    q.offset = query_offset_.data(), q.out = query_out_.data();
+    for_each(Space{}, parts, q);
+    const std::vector<Real> out = to_host(query_out_, 4 * static_cast<std::size_t>(found));
+    centre.resize(static_cast<std::size_t>(found)), radius.resize(static_cast<std::size_t>(found));
+    for (std::size_t k = 0; k < static_cast<std::size_t>(found); ++k)
+      centre[k] = {out[4 * k], out[4 * k + 1], out[4 * k + 2]}, radius[k] = out[4 * k + 3];
   }
   double removed_mass() const { return removed_mass_; }
   // Translational kinetic + potential energy the removed particles had when they were removed, J.
@@ -638,7 +640,7 @@ class Simulation {
   // every batch is as long as it may be (kMaxBatch: the flags' room).
   static constexpr std::uint64_t kMaxBatch = 256;
   void run_batched(std::uint64_t steps) {
-    flags_.resize(std::max<std::size_t>(flags_.size(), kMaxBatch));
+    flags_.ensure(kMaxBatch);
     while (steps > 0) {
       const std::uint64_t k = std::min(kMaxBatch, steps);
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
@@ -721,8 +723,8 @@ class Simulation {
     ParticleTally<Shape, Real> f{shape_, store_.view(), params_.gravity, nullptr, nullptr, nullptr, nullptr, nullptr, threshold, counted()};
     if (with_energy) {
       for (auto* b : {&energy_pairs_, &energy_walls_})
-        b->resize(std::max<std::size_t>(b->size(), static_cast<std::size_t>(n)));
-      energy_wall_contacts_.resize(std::max<std::size_t>(energy_wall_contacts_.size(), static_cast<std::size_t>(n)));
+        b->ensure(static_cast<std::size_t>(n));
+      energy_wall_contacts_.ensure(static_cast<std::size_t>(n));
       const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
       for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), lists_.attach(world_.view()), laws_,
                                                            slots, contacts_.pairs(), contacts_.walls(), broad_.images(), counted()});
@@ -743,8 +745,8 @@ class Simulation {
 
   void prepare_statistics() {
     if constexpr (Features::statistics) {
-      stats_vertex_face_.resize(std::max<std::size_t>(stats_vertex_face_.size(), store_.size()));
-      stats_edge_edge_.resize(std::max<std::size_t>(stats_edge_edge_.size(), store_.size()));
+      stats_vertex_face_.ensure(store_.size());
+      stats_edge_edge_.ensure(store_.size());
     }
   }
   ContactStats contact_stats() {
@@ -765,9 +767,9 @@ class Simulation {
     const std::size_t entries = static_cast<std::size_t>(nl.capacity) * static_cast<std::size_t>(nl.stride);
     // Contact points only with rotation; patch moments only with rotation and patches.
     for (int b = 0; b < (Features::rotation ? (kMoments ? 9 : 6) : 3); ++b)
-      slot_reals_[b].resize(std::max(slot_reals_[b].size(), entries));
-    slot_state_.resize(std::max(slot_state_.size(), entries));
-    if constexpr (Features::monitor) slot_overlap_.resize(std::max(slot_overlap_.size(), entries));
+      slot_reals_[b].ensure(entries);
+    slot_state_.ensure(entries);
+    if constexpr (Features::monitor) slot_overlap_.ensure(entries);
     PairSlots<Real> s{};
     for (int d = 0; d < 3; ++d) {
       s.force[d] = slot_reals_[d].data();
@@ -808,10 +810,10 @@ class Simulation {
   BroadPhase<Real, Space> broad_;
   PhaseTimer<Space> timer_;
   Buffer<int, Space> flags_;  // rebuild check of each step of a batch (run_batched)
-  Buffer<std::uint8_t, Space> query_flags_;  // particles_in_box
+  Buffer<Index, Space> query_count_, query_offset_;  // particles_in_box
   Buffer<std::uint8_t, Space> counted_;      // count_only's flags, for the store's order numbered counted_order_
   std::uint64_t reorders_ = 1, counted_order_ = 0;
-  Buffer<Index, Space> query_which_, rows_which_;
+  Buffer<Index, Space> rows_which_;
   Buffer<Real, Space> query_out_;
   Index initial_count_ = 0;
   Index removed_count_ = 0;

@@ -53,12 +53,12 @@ class WorldCandidates {
   void build(const ParticleView<Real>& p, const WorldView<Real>& world, std::uint64_t step) {
     if (!on_) return;
     stride_ = p.n;
-    object_.resize(std::max<std::size_t>(object_.size(), static_cast<std::size_t>(kWorldCandidates) * p.n));
-    count_.resize(std::max<std::size_t>(count_.size(), p.n));
+    object_.ensure(static_cast<std::size_t>(kWorldCandidates) * p.n);
+    count_.ensure(p.n);
     for (;;) {
       if (triangles_) {
-        triangle_.resize(std::max<std::size_t>(triangle_.size(), static_cast<std::size_t>(triangle_capacity_) * p.n));
-        triangle_count_.resize(std::max<std::size_t>(triangle_count_.size(), p.n));
+        triangle_.ensure(static_cast<std::size_t>(triangle_capacity_) * p.n);
+        triangle_count_.ensure(p.n);
       }
       for_each(Space{}, p.n,
                BuildWorldCandidates<Real>{p.position, p.radius, world, skin_, object_.data(), count_.data(), stride_,
@@ -68,6 +68,8 @@ class WorldCandidates {
       const int most = reduce_max(Space{}, p.n, ValueOf<std::uint16_t>{triangle_count_.data()}, 0);
       if (most <= triangle_capacity_) break;
       triangle_capacity_ = std::min(kTriangleCandidatesLargest, most + most / 4);
+      const std::size_t need = static_cast<std::size_t>(triangle_capacity_) * p.n;  // exact: no headroom on a capacity step
+      if (triangle_.size() < need) triangle_.resize(need);
     }
     valid_until_ = valid_steps_ == kForever || step > kForever - valid_steps_ ? kForever : step + valid_steps_;
     ++builds_;

@@ -43,6 +43,12 @@ class Buffer {
   // Grows to at least n elements keeping the first `keep` (a store that takes in particles;
   // capacity grows by half again, so appends allocate O(log n) times). Never shrinks.
   void grow_keep(std::size_t n, std::size_t keep);
+  // At least n elements, contents discarded when it grows, by half again at least: scratch sized
+  // by the particle count reallocates O(log n) times while a feed adds particles, not at every
+  // insertion (each cudaMalloc/cudaFree pair synchronises the device). A first sizing is exact.
+  void ensure(std::size_t n) {
+    if (n > size_) resize(std::max(n, size_ + size_ / 2));
+  }
   T* data() { return data_; }
   const T* data() const { return data_; }
   std::size_t size() const { return size_; }

@@ -154,13 +154,13 @@ class RadixSorter<Cuda> {
  public:
   void sort_pairs(std::uint32_t* keys, Index* values, Index n, int end_bit) {
     if (n <= 1) return;
-    keys_alt_.resize(static_cast<std::size_t>(n) > keys_alt_.size() ? n : keys_alt_.size());
-    values_alt_.resize(static_cast<std::size_t>(n) > values_alt_.size() ? n : values_alt_.size());
+    keys_alt_.ensure(static_cast<std::size_t>(n));
+    values_alt_.ensure(static_cast<std::size_t>(n));
     cub::DoubleBuffer<std::uint32_t> k(keys, keys_alt_.data());
     cub::DoubleBuffer<Index> v(values, values_alt_.data());
     std::size_t bytes = 0;
     cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, k, v, n, 0, end_bit), "cub sort size");
-    if (bytes > temp_.size()) temp_.resize(bytes);
+    temp_.ensure(bytes);
     cuda_check(cub::DeviceRadixSort::SortPairs(temp_.data(), bytes, k, v, n, 0, end_bit), "cub sort");
     if (k.Current() != keys) {
       cuda_check(cudaMemcpyAsync(keys, k.Current(), n * sizeof(std::uint32_t), cudaMemcpyDeviceToDevice), "copy");

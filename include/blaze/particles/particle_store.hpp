@@ -130,19 +130,23 @@ class ParticleStore {
     s.check_consistent();
     const std::size_t n = static_cast<std::size_t>(n_), m = s.size(), total = n + m;
     if (m == 0) return;
-    std::vector<Real> c(m), zeros(m, Real(0));
-    auto put3 = [&](Field3& f, const std::vector<Vec3<Real>>* v) {
+    std::vector<Real> c(m);
+    auto put3 = [&](Field3& f, const std::vector<Vec3<Real>>& v) {
       for (int d = 0; d < 3; ++d) {
-        for (std::size_t k = 0; k < m; ++k) c[k] = v ? (d == 0 ? (*v)[k].x : d == 1 ? (*v)[k].y : (*v)[k].z) : Real(0);
+        for (std::size_t k = 0; k < m; ++k) c[k] = d == 0 ? v[k].x : d == 1 ? v[k].y : v[k].z;
         put(f[d], c, n, total);
       }
     };
-    put3(position_, &s.position);
-    put3(velocity_, &s.velocity);
-    put3(angular_velocity_, &s.angular_velocity);
-    put3(force_, nullptr);
-    put3(torque_, nullptr);
-    if (with_previous_) put3(acceleration_prev_, nullptr), put3(torque_prev_, nullptr);
+    // fields that start at zero are zeroed where they live (no host array to copy in)
+    auto zero3 = [&](Field3& f) {
+      for (auto& b : f) put_zero(b, n, total);
+    };
+    put3(position_, s.position);
+    put3(velocity_, s.velocity);
+    put3(angular_velocity_, s.angular_velocity);
+    zero3(force_);
+    zero3(torque_);
+    if (with_previous_) zero3(acceleration_prev_), zero3(torque_prev_);
     for (int q = 0; q < 4; ++q) {
       for (std::size_t k = 0; k < m; ++k) {
         const Quat<Real>& o = s.orientation[k];
@@ -158,14 +162,12 @@ class ParticleStore {
     put(material_, s.material, n, total);
     put(type_, s.type, n, total);
     put(id_, s.id, n, total);
-    if (with_penetration_) put(penetration_, zeros, n, total);
+    if (with_penetration_) put_zero(penetration_, n, total);
     if (with_ledger_)
-      for (auto& l : ledger_) put(l, zeros, n, total);
-    if (with_thesis_) put(thesis_, zeros, n, total);
-    if (with_images_) {
-      const std::vector<Index> none(m, 0);
-      for (auto& axis : image_) put(axis, none, n, total);
-    }
+      for (auto& l : ledger_) put_zero(l, n, total);
+    if (with_thesis_) put_zero(thesis_, n, total);
+    if (with_images_)
+      for (auto& axis : image_) put_zero(axis, n, total);
     if (with_ledger_ && class_sums_.size() < kClassSumReals * total)  // per-step scratch, column stride: laid anew
       lay_class_sums(std::max(total, n + n / 2));
     n_ = static_cast<Index>(total);
@@ -288,7 +290,7 @@ class ParticleStore {
   }
   void download_rows(const Index* which, Index count, std::vector<Real>& out) {
     out.resize(kept_real_fields() * static_cast<std::size_t>(count));
-    rows_.resize(std::max<std::size_t>(rows_.size(), out.size()));
+    rows_.ensure(out.size());
     std::size_t at = 0;
     for (auto* f : real_fields()) {
       if (!f->size()) continue;
@@ -300,7 +302,7 @@ class ParticleStore {
   void upload_rows(const Index* which, Index count, const std::vector<Real>& in) {
     if (in.size() != kept_real_fields() * static_cast<std::size_t>(count))
       throw std::invalid_argument("particle store: " + std::to_string(in.size()) + " row values for " + std::to_string(count) + " rows");
-    rows_.resize(std::max<std::size_t>(rows_.size(), in.size()));
+    rows_.ensure(in.size());
     copy_n(in.data(), in.size(), rows_.data(), Host{}, Space{});
     std::size_t at = 0;
     for (auto* f : real_fields()) {
@@ -445,6 +447,11 @@ class ParticleStore {
   static void put(Buffer<T, Space>& b, const std::vector<T>& v, std::size_t n, std::size_t total) {
     b.grow_keep(total, n);
     copy_n(v.data(), v.size(), b.data() + n, Host{}, Space{});
+  }
+  template <class T>
+  static void put_zero(Buffer<T, Space>& b, std::size_t n, std::size_t total) {
+    b.grow_keep(total, n);
+    for_each(Space{}, static_cast<Index>(total - n), Fill<T>{b.data() + n, T(0)});
   }
   template <class T>
   static void copy_field(Buffer<T, Space>& dst, const Buffer<T, Space>& src, std::size_t n) {
