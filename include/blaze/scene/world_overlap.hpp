@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 #include "blaze/scene/scene.hpp"
+#include "blaze/scene/world_block.hpp"
 #include "blaze/world/cylinder.hpp"
 #include "blaze/world/mesh_bins.hpp"
 #include "blaze/world/planar_polygon.hpp"
@@ -56,9 +57,37 @@ class WorldOverlapCheck {
     for (std::size_t k = 0; k < s.meshes.size(); ++k) {
       const TriangleMesh& m = s.meshes[k].mesh;
       mesh_bins_.push_back(bin_mesh(m, largest, std::fmax(largest, 1e-6 * std::fmax(m.extent(), 1e-300))));
+      mesh_corners_.emplace_back();
+      for (std::size_t t = 0; t < m.size(); ++t)
+        for (int a = 0; a < 3; ++a) mesh_corners_.back().push_back(m.corner(t, a));
       mesh_names_.push_back("[[mesh]] #" + std::to_string(k + 1) + " '" + s.meshes[k].name + "' (" + s.place("mesh[" + std::to_string(k) + "].file") + ")");
     }
+    // (the views point into the vectors above: moving the check keeps them, copying would not)
+    for (std::size_t k = 0; k < mesh_bins_.size(); ++k) {
+      const MeshBinsHost& b = mesh_bins_[k];
+      mesh_views_.push_back({{b.origin, 1 / b.cell, b.nx, b.ny, b.nz, b.start.data(), b.entry.data()}, mesh_corners_[k].data()});
+    }
   }
+  WorldOverlapCheck(const WorldOverlapCheck&) = delete;
+  WorldOverlapCheck& operator=(const WorldOverlapCheck&) = delete;
+  WorldOverlapCheck(WorldOverlapCheck&&) = default;
+
+  // The sphere test over this check's arrays (world_block.hpp), on the host.
+  WorldBlockView view() const {
+    WorldBlockView v;
+    v.cylinder = cylinders_.data(), v.cylinders = static_cast<int>(cylinders_.size());
+    v.polygon = polygons_.data(), v.mill_part = mill_part_.data(), v.polygons = static_cast<int>(polygons_.size());
+    v.mesh = mesh_views_.data(), v.meshes = static_cast<int>(mesh_views_.size());
+    v.slack = slack_;
+    return v;
+  }
+  // The arrays view() reads, for a copy where the particles live (kernels/placement.hpp).
+  const std::vector<Cylinder<double>>& cylinders() const { return cylinders_; }
+  const std::vector<PlanarPolygon<double>>& polygons() const { return polygons_; }
+  const std::vector<std::uint8_t>& mill_parts() const { return mill_part_; }
+  const std::vector<MeshBinsHost>& mesh_bins() const { return mesh_bins_; }
+  const std::vector<std::vector<Vec3<double>>>& mesh_corners() const { return mesh_corners_; }
+  double slack() const { return slack_; }
 
   // A particle of centre x and size r (bounding radius), with its vertices in the world frame
   // (empty for a sphere); `who` names it for the message. Throws SceneError on an overlap.
@@ -66,7 +95,7 @@ class WorldOverlapCheck {
     for (std::size_t k = 0; k < polygons_.size(); ++k) check_polygon(k, x, r, vertices, who);
     for (std::size_t k = 0; k < cylinders_.size(); ++k) check_cylinder(k, x, r, vertices, who);
     for (std::size_t k = 0; k < mesh_bins_.size(); ++k) {
-      const MeshTouch t = mesh_touch(k, x, r);
+      const WorldBlockView::MeshTouch t = view().mesh_touch(static_cast<int>(k), x, r);
       if (t.triangle < 0) continue;
       const std::string at = " at its triangle " + std::to_string(s_.meshes[k].mesh.file_index[static_cast<std::size_t>(t.triangle)]) + " (in the file)";
       if (t.across) fail(who, x, mesh_names_[k] + at, "lies across, with its centre behind the face (the side its normal points away from),");
@@ -80,16 +109,14 @@ class WorldOverlapCheck {
   // user's wall deeper than its size a particle is let through, as check() does: finish() then
   // tells the user which wall faces away.)
   bool blocked(const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices) const {
-    // The drums first: one test each, and they refuse every draw outside the shell.
+    const WorldBlockView world = view();
+    if (vertices.empty()) return world.blocked(x, r);
+    // A polyhedron: its centre as a sphere's for the drums' shells and the walls' backs, its
+    // vertices for the overlaps. The drums first: one test each.
     for (const Cylinder<double>& c : cylinders_) {
       const double s = dot(x - c.origin, c.axis);
       if (!(s >= 0 && s <= c.length)) continue;
-      const double rho = norm(x - c.origin - s * c.axis);
-      if (vertices.empty()) {
-        if (rho + r > c.radius + slack_) return true;
-        continue;
-      }
-      if (rho > c.radius) return true;
+      if (norm(x - c.origin - s * c.axis) > c.radius) return true;
       for (const auto& v : vertices) {
         const double sv = dot(v - c.origin, c.axis);
         if (sv >= 0 && sv <= c.length && norm(v - c.origin - sv * c.axis) > c.radius + slack_) return true;
@@ -98,26 +125,18 @@ class WorldOverlapCheck {
     for (std::size_t k = 0; k < polygons_.size(); ++k) {
       const PlanarPolygon<double>& w = polygons_[k];
       const double d = dot(x - w.centroid, w.normal);
-      // In front and beyond bound + 2 r of the centroid: no point of the polygon is within r of x
-      // or of its projection, so nothing below can refuse it (a polyhedron's vertex lies within
-      // r of x; skipping the point-in-polygon tests matters for a mill's hundreds of faces).
+      // as WorldBlockView::blocked (a polyhedron's vertex lies within r of x)
       if (d > 0 && norm2(x - w.centroid) > (w.bound + 2 * r) * (w.bound + 2 * r)) continue;
       const bool over = w.contains(x - d * w.normal);
       if (over && d <= 0 && (d > -r || mill_part_[k])) return true;
-      if (over && d <= 0) continue;  // behind a user's wall, deeper than the particle's size
-      if (vertices.empty()) {
-        if (over && d < r - slack_) return true;
-        if (!over && std::fabs(d) < r && rim_distance(w, x) < r - slack_) return true;
-        continue;
-      }
       if (!(d > 0 && d < r)) continue;
       for (const auto& v : vertices) {
         const double dv = dot(v - w.centroid, w.normal);
         if (dv < -slack_ && w.contains(v - dv * w.normal)) return true;
       }
     }
-    for (std::size_t k = 0; k < mesh_bins_.size(); ++k)
-      if (mesh_touch(k, x, r).triangle >= 0) return true;
+    for (int k = 0; k < world.meshes; ++k)
+      if (world.mesh_touch(k, x, r).triangle >= 0) return true;
     return false;
   }
 
@@ -134,41 +153,6 @@ class WorldOverlapCheck {
   }
 
  private:
-  // The triangle of mesh k nearest x within r - slack (or across it within r), or none.
-  struct MeshTouch {
-    int triangle = -1;
-    double distance = 0;
-    bool across = false;
-  };
-  MeshTouch mesh_touch(std::size_t k, const Vec3<double>& x, double r) const {
-    const MeshBinsHost& b = mesh_bins_[k];
-    const TriangleMesh& m = s_.meshes[k].mesh;
-    const Vec3<double> g = (x - b.origin) * (1 / b.cell);
-    MeshTouch best;
-    if (!(g.x >= 0 && g.y >= 0 && g.z >= 0)) return best;
-    const long i = static_cast<long>(g.x), j = static_cast<long>(g.y), l = static_cast<long>(g.z);
-    if (i >= b.nx || j >= b.ny || l >= b.nz) return best;
-    const std::size_t c = static_cast<std::size_t>((l * b.ny + j) * b.nx + i);
-    double nearest = r - slack_;
-    for (int e = b.start[c]; e < b.start[c + 1]; ++e) {
-      const auto t = static_cast<std::size_t>(b.entry[static_cast<std::size_t>(e)]);
-      const Vec3<double> p0 = m.corner(t, 0), p1 = m.corner(t, 1), p2 = m.corner(t, 2);
-      const Vec3<double> n = cross(p1 - p0, p2 - p0) * (1 / norm(cross(p1 - p0, p2 - p0)));
-      const double d = dot(x - p0, n);
-      const Vec3<double> q = x - d * n;
-      const bool over = dot(cross(p1 - p0, q - p0), n) >= 0 && dot(cross(p2 - p1, q - p1), n) >= 0 && dot(cross(p0 - p2, q - p2), n) >= 0;
-      if (over && d <= 0 && d > -r) return {static_cast<int>(t), -d, true};
-      double dist = over ? std::fabs(d) : INFINITY;
-      if (!over)
-        for (int a = 0; a < 3; ++a) {
-          const Vec3<double> u = m.corner(t, a), v = m.corner(t, (a + 1) % 3), uv = v - u;
-          const double s = std::fmin(1.0, std::fmax(0.0, dot(x - u, uv) / norm2(uv)));
-          dist = std::fmin(dist, norm(x - (u + s * uv)));
-        }
-      if (dist < nearest) nearest = dist, best = {static_cast<int>(t), dist, false};
-    }
-    return best;
-  }
   static std::string vec_text(const Vec3<double>& v) {
     return "(" + Scene::shortest(v.x) + ", " + Scene::shortest(v.y) + ", " + Scene::shortest(v.z) + ")";
   }
@@ -193,7 +177,7 @@ class WorldOverlapCheck {
     if (vertices.empty()) {
       if (over && d > 0 && d < r - slack_) fail(who, x, object, "overlaps by " + Scene::shortest(r - d) + " m");
       if (!over && std::fabs(d) < r) {
-        const double gap = rim_distance(w, x);
+        const double gap = WorldBlockView::rim_distance(w, x);
         if (gap < r - slack_) fail(who, x, object, "overlaps the rim by " + Scene::shortest(r - gap) + " m");
       }
       return;
@@ -204,18 +188,6 @@ class WorldOverlapCheck {
       if (dv < -slack_ && w.contains(v - dv * w.normal))
         fail(who, x, object, "has a vertex " + Scene::shortest(-dv) + " m deep in");
     }
-  }
-
-  // Distance from x to the nearest active rim edge of w (infinite when none is active).
-  static double rim_distance(const PlanarPolygon<double>& w, const Vec3<double>& x) {
-    double best = INFINITY;
-    for (int e = 0; e < w.vertex_count; ++e) {
-      if (!((w.active_edges >> e) & 1u)) continue;
-      const Vec3<double> a = w.vertex[e], b = w.vertex[e + 1 < w.vertex_count ? e + 1 : 0], ab = b - a;
-      const double t = std::fmin(1.0, std::fmax(0.0, dot(x - a, ab) / norm2(ab)));
-      best = std::fmin(best, norm(x - (a + t * ab)));
-    }
-    return best;
   }
 
   void check_cylinder(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
@@ -246,10 +218,12 @@ class WorldOverlapCheck {
   const Scene& s_;
   double slack_;
   std::vector<PlanarPolygon<double>> polygons_;
-  std::vector<char> mill_part_;  // per polygon: generated by the [mill] (its back is the mill's outside)
+  std::vector<std::uint8_t> mill_part_;  // per polygon: generated by the [mill] (its back is the mill's outside)
   std::vector<Cylinder<double>> cylinders_;
   std::vector<std::string> polygon_names_, cylinder_names_, mesh_names_;
   std::vector<MeshBinsHost> mesh_bins_;
+  std::vector<std::vector<Vec3<double>>> mesh_corners_;  // per mesh: 3 a triangle
+  std::vector<MeshBlockView> mesh_views_;
   std::vector<long> front_, behind_;
 };
 
