@@ -15,13 +15,15 @@
 // draws centres in the region (InsertionRegion::draw; from its own counter-based stream,
 // core/counter_random.hpp, so any number of threads gives the same result), up to kDrawsPerRound
 // until one is clear of what is there: of the particles present (the simulation's particles near
-// the region: Simulation::particles_in_box) and placed in earlier rounds, of the world
-// (WorldOverlapCheck, as fills are: the world at its initial pose) and inside the domain. That
-// centre is kept when it also overlaps no candidate of the same round before it that passed those
-// tests. The tests of a round run on all host threads; after kTries rounds the particles still
-// open stay due (the region counts as full until the next insertion). At the low fractions a feed
-// region should have, a round places nearly all.
-// (Stop 32's one-at-a-time placement took 120% of the steps' time for 1e6 beads on the H200.)
+// the region: Simulation::spheres_in_box) and placed in earlier rounds, of the world
+// (WorldOverlapCheck's test, as fills are: the world at its initial pose) and inside the domain.
+// That centre is kept when it also overlaps no candidate of the same round before it that passed
+// those tests. The rounds run where the particles live (kernels/placement.hpp: on the GPU for a
+// GPU run, on all host threads otherwise), the host numbering each round's candidates; after
+// kTries rounds the particles still open stay due (the region counts as full until the next
+// insertion). At the low fractions a feed region should have, a round places nearly all.
+// (Stop 32's one-at-a-time placement took 120% of the steps' time for 1e6 beads on the H200, the
+// host's parallel rounds 6-9%.)
 //
 // State (save()/restore(), in the checkpoint): the size engine, the placement stream's counter,
 // the delivered count and mass, the drawn sizes waiting to be placed, the shortfall counters and
@@ -38,15 +40,18 @@
 #include <vector>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include "blaze/core/counter_random.hpp"
 #include "blaze/scene/scene.hpp"
 #include "blaze/scene/scene_build.hpp"
-#include "blaze/scene/sphere_grid.hpp"
+#include "blaze/exec/buffer.hpp"
 #include "blaze/scene/world_overlap.hpp"
+#include "kernels/placement.hpp"
+#include "pipeline/world_block_arrays.hpp"
 
 namespace blaze {
 
-template <class Real>
+template <class Real, class Space = DefaultSpace>
 class Feeder {
  public:
   static constexpr int kTries = 50;  // rounds (of kDrawsPerRound centres) before the region counts as full
@@ -54,7 +59,7 @@ class Feeder {
   // candidates are checked after). One draw a round took 26 rounds an insertion for the 1e6-bead
   // slab (bench/scenes/feed_box_1m.toml), 8 take 5.
   static constexpr int kDrawsPerRound = 8;
-  // Candidates a round needs to run on all threads (fewer: waking the team costs more than their tests).
+  // Particles a batch needs to be made on all threads (fewer: waking the team costs more).
   static constexpr long kParallelRound = 256;
 
   // `shapes`: the scene's polyhedron table (null for spheres).
@@ -66,7 +71,7 @@ class Feeder {
   }
 
   const FeedSpec& spec() const { return spec_; }
-  // Rounds of more candidates than this run on all threads (tests set 0: every round does).
+  // Batches of more particles than this are made on all threads (tests set 0: every batch is).
   void parallel_from(long candidates) { parallel_round_ = candidates; }
   // Steps between insertions, and whether step k is an insertion.
   std::uint64_t every() const { return every_; }
@@ -83,6 +88,7 @@ class Feeder {
   // The insertion at the simulation's current step: places what is due, inserts it.
   template <class Sim>
   void feed(Sim& sim) {
+    static_assert(std::is_same_v<typename Sim::space_type, Space>, "a feeder places where its simulation's particles live");
     const auto started = std::chrono::steady_clock::now();
     // up to the next insertion, or to the end when there is none (in whole steps, as inserts_at
     // counts: the last insertion owes all that is due by the end)
@@ -91,123 +97,71 @@ class Feeder {
     const std::size_t want = due_now(span);
     Vec3<double> lo, hi;
     spec_.region.bounds(lo, hi);
-    const double reach = 2 * static_cast<double>(sim.max_radius());
-    // (the buffers are the feeder's, kept between insertions: no pages to fault in again)
-    std::vector<Vec3<double>>&centre = scratch_.centre, &at = scratch_.at, &x = scratch_.x;
-    std::vector<double>& radius = scratch_.radius;
-    std::vector<long>&open = scratch_.open, &entry = scratch_.entry, &still = scratch_.still;
-    std::vector<char>&placed = scratch_.placed, &ok = scratch_.ok;
+    const double r_max = static_cast<double>(sim.max_radius()), reach = 2 * r_max;
     const Vec3<double> margin{reach, reach, reach};
-    sim.particles_in_box(lo - margin, hi + margin, centre, radius);
-    // the grids persist between insertions (emptied, not reallocated) while the box stays the same
-    // (what it keeps clear of: the box holds every centre put, so puts may run on many threads
-    // while its cells are an array; cells of the largest diameter, 27 a query)
-    const double r_max = static_cast<double>(sim.max_radius());
-    if (!occupied_ || !occupied_->covers(lo - margin, hi + margin, reach, r_max)) {
-      occupied_.emplace(lo - margin, hi + margin, reach, r_max);
-      fresh_.emplace(lo - margin, hi + margin, reach, r_max);
-    }
-    SphereGrid &occupied = *occupied_, &fresh = *fresh_;
-    const bool concurrent = occupied.concurrent_puts();
-    const long present = static_cast<long>(centre.size());
+    // The particles present (found where they live, and left there), binned in cells one largest
+    // diameter wide from the region's box less a diameter: the occupied cells.
+    Rounds& d = rounds_scratch_;
+    const int present = static_cast<int>(sim.spheres_in_box(lo - margin, hi + margin, d.found));
+    const std::size_t capacity = static_cast<std::size_t>(present) + want;
+    if (capacity > static_cast<std::size_t>(0x7fffffff)) throw std::length_error("feeder: more than 2^31 particles in and near the region");
+    SphereCellsView occupied = lay_cells(d.head, d.next, d.sphere, capacity, lo - margin, reach, r_max);
+    for_each(Space{}, present, PutFound<Real>{occupied, d.found.data(), 0});
+    if (!d.world) d.world.emplace(world_);
+    std::vector<int>& open = scratch_.open;
     open.resize(want);
-    for (std::size_t k = 0; k < want; ++k) open[k] = static_cast<long>(k);
+    for (std::size_t k = 0; k < want; ++k) open[k] = static_cast<int>(k);
+    std::vector<Vec3<double>>& at = scratch_.at;
+    std::vector<char>& placed = scratch_.placed;
     at.resize(want), placed.assign(want, 0);
-    occupied.clear();
-    occupied.resize(centre.size());
-    auto found_at = std::chrono::steady_clock::now();
-    // Rounds of parallel random sequential addition: every particle still open draws centres
-    // (its own counter-based stream: the same on any number of threads), kept when it is clear of
-    // the particles present and placed, of the world and of the domain's faces, and of every
-    // candidate of the round before it (so candidates need not be tested one by one). The open
-    // ones draw again, up to kTries rounds; then the region counts as full until the next insertion.
-    // One parallel region holds the binning and every round (the numbering of a round's
-    // candidates on one thread): a region per loop woke the team ~20 times an insertion, which
-    // took half the placement's time on a 16-core host (0.42 s of the 1e6-bead feed against 0.22 s
-    // with the threads kept spinning).
-    const std::vector<Vec3<double>> no_vertices;
-    long m = 0, passed = 0, kept = 0;
-    std::size_t base = 0;
-    bool done = false;
-#pragma omp parallel if (present + static_cast<long>(want) > parallel_round_)
-    {
-      if (concurrent) {
-#pragma omp for schedule(static)
-        for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
-      } else {
-#pragma omp single
-        for (long k = 0; k < present; ++k) occupied.put(static_cast<std::size_t>(k), centre[static_cast<std::size_t>(k)], radius[static_cast<std::size_t>(k)]);
+    upload(d.radius, pending_.data(), want);
+    const auto found_at = std::chrono::steady_clock::now();
+    // Rounds of parallel random sequential addition (kernels/placement.hpp): every particle still
+    // open draws centres (its own counter-based stream: the same on any number of threads), kept
+    // when it is clear of the particles present and placed, of the world and of the domain's
+    // faces, and of every candidate of the round before it (so candidates need not be tested one
+    // by one). The open ones draw again, up to kTries rounds; then the region counts as full until
+    // the next insertion. The draws and tests run where the particles live; the host numbers each
+    // round's candidates (a byte and an index a candidate each way).
+    int occupied_size = present;
+    std::vector<int>& entry = scratch_.entry;
+    std::vector<int>& still = scratch_.still;
+    for (int round = 0; round < kTries && !open.empty(); ++round) {
+      ++rounds_;
+      const int m = static_cast<int>(open.size());
+      upload(d.open, open.data(), open.size());
+      d.centre.ensure(3 * open.size()), d.ok.ensure(open.size()), d.entry.ensure(open.size());
+      for_each(Space{}, m, DrawCandidates{occupied, d.world->view(), spec_.region, s_.domain_lo, s_.domain_hi, spec_.seed, draws_, kDrawsPerRound,
+                                          d.open.data(), d.radius.data(), d.centre.data(), d.ok.data()});
+      draws_ += static_cast<std::uint64_t>(m);
+      // the candidates that passed, numbered in candidate order, against each other
+      std::vector<std::uint8_t> ok = to_host(d.ok, open.size());
+      entry.resize(open.size());
+      int passed = 0;
+      for (int j = 0; j < m; ++j) entry[static_cast<std::size_t>(j)] = ok[static_cast<std::size_t>(j)] ? passed++ : -1;
+      if (passed == 0) continue;
+      upload(d.entry, entry.data(), entry.size());
+      const SphereCellsView fresh = lay_cells(d.fresh_head, d.fresh_next, d.fresh_sphere, static_cast<std::size_t>(passed), lo - margin, reach, r_max);
+      for_each(Space{}, m, PutCandidates{fresh, d.open.data(), d.radius.data(), d.centre.data(), d.entry.data(), 0});
+      for_each(Space{}, m, TestAgainstEarlier{fresh, d.open.data(), d.radius.data(), d.centre.data(), d.entry.data(), d.ok.data()});
+      // the kept join the particles present (numbered after them, in candidate order)
+      ok = to_host(d.ok, open.size());
+      const std::vector<double> centre = to_host(d.centre, 3 * open.size());
+      still.clear();
+      int kept = 0;
+      for (int j = 0; j < m; ++j) {
+        const std::size_t c = static_cast<std::size_t>(j), k = static_cast<std::size_t>(open[c]);
+        if (!ok[c]) {
+          entry[c] = -1, still.push_back(open[c]);
+          continue;
+        }
+        entry[c] = kept++;
+        at[k] = {centre[3 * c], centre[3 * c + 1], centre[3 * c + 2]}, placed[k] = 1;
       }
-#pragma omp single
-      found_at = std::chrono::steady_clock::now();
-      for (int round = 0; round < kTries; ++round) {
-#pragma omp single
-        {
-          done = open.empty();
-          if (!done) {
-            ++rounds_;
-            m = static_cast<long>(open.size());
-            x.resize(open.size()), ok.assign(open.size(), 0);
-          }
-        }
-        if (done) break;
-#pragma omp for schedule(dynamic, 256)
-        for (long j = 0; j < m; ++j) {
-          CounterEngine e(spec_.seed, draws_ + static_cast<std::uint64_t>(j));
-          const double r = pending_[static_cast<std::size_t>(open[j])];
-          for (int t = 0; t < kDrawsPerRound && !ok[j]; ++t) {
-            x[j] = spec_.region.draw(e, r);
-            ok[j] = inside_domain(x[j], r) && occupied.overlapping(x[j], r) < 0 && !world_.blocked(x[j], r, no_vertices);
-          }
-        }
-        // the candidates that passed, numbered in candidate order: a candidate's entry in `fresh`
-#pragma omp single
-        {
-          draws_ += static_cast<std::uint64_t>(m);
-          entry.assign(open.size(), -1);
-          passed = 0;
-          for (long j = 0; j < m; ++j)
-            if (ok[j]) entry[static_cast<std::size_t>(j)] = passed++;
-          fresh.clear();
-          fresh.resize(static_cast<std::size_t>(passed));
-          if (!concurrent)
-            for (long j = 0; j < m; ++j)
-              if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
-        }
-        if (concurrent) {
-#pragma omp for schedule(static)
-          for (long j = 0; j < m; ++j)
-            if (ok[j]) fresh.put(static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
-        }
-#pragma omp for schedule(dynamic, 256)
-        for (long j = 0; j < m; ++j)
-          if (ok[j] && fresh.overlapping(x[j], pending_[static_cast<std::size_t>(open[j])], 0, entry[j]) >= 0) ok[j] = 0;
-        // the kept join the particles present (numbered after them, in candidate order)
-#pragma omp single
-        {
-          still.clear();
-          base = occupied.size();
-          kept = 0;
-          for (long j = 0; j < m; ++j)
-            if (ok[j]) entry[static_cast<std::size_t>(j)] = kept++;
-            else still.push_back(open[j]);
-          occupied.resize(base + static_cast<std::size_t>(kept));
-        }
-#pragma omp for schedule(static)
-        for (long j = 0; j < m; ++j) {
-          if (!ok[j]) continue;
-          const std::size_t k = static_cast<std::size_t>(open[j]);
-          if (concurrent) occupied.put(base + static_cast<std::size_t>(entry[j]), x[j], pending_[k]);
-          at[k] = x[j], placed[k] = 1;
-        }
-#pragma omp single
-        {
-          if (!concurrent)
-            for (long j = 0; j < m; ++j)
-              if (ok[j]) occupied.put(base + static_cast<std::size_t>(entry[j]), x[j], pending_[static_cast<std::size_t>(open[j])]);
-          open.swap(still);
-        }
-      }
+      upload(d.entry, entry.data(), entry.size());
+      for_each(Space{}, m, PutCandidates{occupied, d.open.data(), d.radius.data(), d.centre.data(), d.entry.data(), occupied_size});
+      occupied_size += kept;
+      open.swap(still);
     }
     // the placed, in the order drawn; the rest stay pending, in order, for the next insertion
     std::vector<std::size_t>& chosen = scratch_.chosen;
@@ -430,14 +384,42 @@ class Feeder {
   long insertions_ = 0, rounds_ = 0;
   long parallel_round_ = kParallelRound;
   std::vector<double> delivered_;  // m, every delivered radius (polyhedra: the bounding radius)
-  std::optional<SphereGrid> occupied_, fresh_;  // not state: placement's grids, kept between insertions
-  struct Scratch {  // not state: placement's buffers, kept between insertions
-    std::vector<Vec3<double>> centre, at, x;
-    std::vector<double> radius, left;
-    std::vector<long> open, entry, still;
-    std::vector<char> placed, ok;
+  struct Scratch {  // not state: placement's host buffers, kept between insertions
+    std::vector<Vec3<double>> at;
+    std::vector<double> left;
+    std::vector<int> open, entry, still;
+    std::vector<char> placed;
     std::vector<std::size_t> chosen;
   } scratch_;
+  // Not state: the rounds' arrays where the particles live (kernels/placement.hpp), kept between
+  // insertions.
+  struct Rounds {
+    Buffer<Real, Space> found;  // the particles present: x, y, z, r
+    Buffer<int, Space> head, next, fresh_head, fresh_next, open, entry;
+    Buffer<double, Space> sphere, fresh_sphere, radius, centre;
+    Buffer<std::uint8_t, Space> ok;
+    std::optional<WorldBlockArrays<Space>> world;  // uploaded at the first insertion
+  } rounds_scratch_;
+
+  template <class T>
+  static void upload(Buffer<T, Space>& b, const T* v, std::size_t n) {
+    b.ensure(n);
+    copy_n(v, n, b.data(), Host{}, Space{});
+  }
+  template <class T>
+  static void upload(Buffer<T, Space>& b, const std::vector<T>& v) {
+    upload(b, v.data(), v.size());
+  }
+  // Cells for up to `capacity` spheres of radius <= r_max, `cell` wide from lo, emptied.
+  static SphereCellsView lay_cells(Buffer<int, Space>& head, Buffer<int, Space>& next, Buffer<double, Space>& sphere, std::size_t capacity,
+                                   const Vec3<double>& lo, double cell, double r_max) {
+    std::size_t heads = 1024;  // a power of two, at least twice the spheres: chains of ~1 sphere a cell
+    while (heads < 2 * capacity) heads *= 2;
+    head.ensure(heads), next.ensure(std::max<std::size_t>(capacity, 1)), sphere.ensure(4 * std::max<std::size_t>(capacity, 1));
+    for_each(Space{}, static_cast<Index>(heads), Fill<int>{head.data(), -1});
+    return {lo, 1 / cell, r_max, static_cast<std::uint32_t>(heads - 1), head.data(), next.data(), sphere.data()};
+  }
+
 };
 
 }  // namespace blaze

@@ -111,6 +111,7 @@ template <class Space, class Shape, class Law, class Integrator, class Kinematic
 class Simulation {
  public:
   using Real = typename Law::real_type;
+  using space_type = Space;
   // Does the shape report contact patches (contact_patch.hpp)? Then pairs once keep their moments.
   using ShapeBody = decltype(std::declval<const Shape&>().body(std::declval<const ParticleView<Real>&>(), Index{}));
   using PairGeometry = std::decay_t<decltype(
@@ -438,14 +439,13 @@ class Simulation {
     store_.append(add);
     rebuild(true);
   }
-  // Centres and bounding radii of the particles whose centre lies in [lo, hi] (m), in memory
-  // order: what a feeder must keep clear of. Found where the particles live, in parts
-  // (kernels/region_query.hpp): reads back a count a part and the centres found.
-  void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre,
-                        std::vector<double>& radius) {
-    centre.clear(), radius.clear();
+  // The particles whose centre lies in [lo, hi] (m), in memory order: x, y, z and bounding radius
+  // of each in `out` (4 reals a particle, on this space), found where they live in parts
+  // (kernels/region_query.hpp; a count a part comes back); returns how many. What a feeder must
+  // keep clear of.
+  Index spheres_in_box(const Vec3<double>& lo, const Vec3<double>& hi, Buffer<Real, Space>& out) {
     const ParticleView<Real> p = store_.view();
-    if (p.n == 0) return;
+    if (p.n == 0) return 0;
     const Index parts = std::min(p.n, kReduceParts<Space>);
     query_count_.ensure(static_cast<std::size_t>(parts));
     InBoxParts<Real> q{p.position, p.radius, vec_cast<Real>(lo), vec_cast<Real>(hi), p.n, parts, query_count_.data(), nullptr, nullptr};
@@ -453,15 +453,21 @@ class Simulation {
     std::vector<Index> offset = to_host(query_count_, static_cast<std::size_t>(parts));
     Index found = 0;
     for (Index& c : offset) found += std::exchange(c, found);  // exclusive: each part's first
-    if (found == 0) return;
-    from_host(query_offset_, offset);
-    query_out_.ensure(4 * static_cast<std::size_t>(found));
-    q.offset = query_offset_.data(), q.out = query_out_.data();
+    if (found == 0) return 0;
+    query_offset_.ensure(offset.size());
+    copy_n(offset.data(), offset.size(), query_offset_.data(), Host{}, Space{});
+    out.ensure(4 * static_cast<std::size_t>(found));
+    q.offset = query_offset_.data(), q.out = out.data();
     for_each(Space{}, parts, q);
-    const std::vector<Real> out = to_host(query_out_, 4 * static_cast<std::size_t>(found));
-    centre.resize(static_cast<std::size_t>(found)), radius.resize(static_cast<std::size_t>(found));
-    for (std::size_t k = 0; k < static_cast<std::size_t>(found); ++k)
-      centre[k] = {out[4 * k], out[4 * k + 1], out[4 * k + 2]}, radius[k] = out[4 * k + 3];
+    return found;
+  }
+  // The same on the host: centres and bounding radii (m).
+  void particles_in_box(const Vec3<double>& lo, const Vec3<double>& hi, std::vector<Vec3<double>>& centre,
+                        std::vector<double>& radius) {
+    const std::size_t found = static_cast<std::size_t>(spheres_in_box(lo, hi, query_out_));
+    const std::vector<Real> out = to_host(query_out_, 4 * found);
+    centre.resize(found), radius.resize(found);
+    for (std::size_t k = 0; k < found; ++k) centre[k] = {out[4 * k], out[4 * k + 1], out[4 * k + 2]}, radius[k] = out[4 * k + 3];
   }
   double removed_mass() const { return removed_mass_; }
   // Translational kinetic + potential energy the removed particles had when they were removed, J.

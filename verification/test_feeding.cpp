@@ -22,6 +22,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <random>
 #include <omp.h>
 #include "blaze/io/checkpoint.hpp"
 #include "blaze/scene/scene_build.hpp"
@@ -29,6 +30,7 @@
 #include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
 #include "pipeline/feeder.hpp"
+#include "pipeline/world_block_arrays.hpp"
 #include "pipeline/scene_params.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"
@@ -468,6 +470,131 @@ BOOST_AUTO_TEST_CASE(placement_does_not_depend_on_the_thread_count) {
   BOOST_TEST(same_bits(a.radius, b.radius));
   BOOST_TEST(same_bits(a.position, b.position));
   BOOST_TEST(same_bits(a.velocity, b.velocity));
+}
+
+// The rounds' cells (kernels/placement.hpp: spheres linked into hashed cells where the particles
+// live, 27 cells a query) find an overlap exactly when a search of every sphere below `before`
+// does: 1500 spheres of three sizes put from many threads, a third of them outside the box the
+// cells start from (negative cell numbers), queried by 3000 spheres of every size up to the
+// largest, with and without a slack, seeing all or the first half; with a table of 64 heads
+// (long shared chains) and of 4096.
+struct QueryCells {
+  SphereCellsView cells;
+  const double* query;  // x, y, z, r, slack a query
+  const int* before;
+  std::uint8_t* hit;
+  BLAZE_HD void operator()(Index q) const {
+    const double* v = query + 5 * q;
+    hit[q] = cells.overlapping({v[0], v[1], v[2]}, v[3], v[4], before[q]) ? 1 : 0;
+  }
+};
+BOOST_AUTO_TEST_CASE(hashed_cells_find_what_a_search_of_every_sphere_finds) {
+  using Space = DefaultSpace;
+  using V = Vec3<double>;
+  const double r_max = 0.05;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.3, 1.3), size(0.2, 1.0);
+  const int n = 1500, queries = 3000;
+  std::vector<double> centre(3 * n), radius(n);
+  std::vector<int> open(n), entry(n);
+  for (int k = 0; k < n; ++k) {
+    centre[3 * k] = u(rng), centre[3 * k + 1] = u(rng), centre[3 * k + 2] = u(rng), radius[k] = r_max * size(rng);
+    open[k] = k, entry[k] = k;
+  }
+  std::vector<double> query(5 * queries);
+  std::vector<int> before(queries);
+  for (int q = 0; q < queries; ++q) {
+    const double r = r_max * size(rng);
+    query[5 * q] = u(rng), query[5 * q + 1] = u(rng), query[5 * q + 2] = u(rng), query[5 * q + 3] = r, query[5 * q + 4] = q % 3 == 0 ? 0.2 * r : 0.0;
+    before[q] = q % 2 == 0 ? 0x7fffffff : n / 2;
+  }
+  for (const std::uint32_t heads : {64u, 4096u}) {
+    Buffer<int, Space> head(heads), next(n), open_d(n), entry_d(n), before_d(queries);
+    Buffer<double, Space> sphere(4 * n), centre_d(3 * n), radius_d(n), query_d(5 * queries);
+    Buffer<std::uint8_t, Space> hit(queries);
+    from_host(open_d, open), from_host(entry_d, entry), from_host(centre_d, centre), from_host(radius_d, radius);
+    from_host(query_d, query), from_host(before_d, before);
+    for_each(Space{}, static_cast<Index>(heads), Fill<int>{head.data(), -1});
+    const SphereCellsView cells{V{0, 0, 0}, 1 / (2 * r_max), r_max, heads - 1, head.data(), next.data(), sphere.data()};
+    for_each(Space{}, n, PutCandidates{cells, open_d.data(), radius_d.data(), centre_d.data(), entry_d.data(), 0});
+    for_each(Space{}, queries, QueryCells{cells, query_d.data(), before_d.data(), hit.data()});
+    const std::vector<std::uint8_t> got = to_host(hit, queries);
+    long found = 0, wrong = 0;
+    for (int q = 0; q < queries; ++q) {
+      const V x{query[5 * q], query[5 * q + 1], query[5 * q + 2]};
+      bool expected = false;
+      for (int j = 0; j < n && j < before[q] && !expected; ++j)
+        expected = norm(x - V{centre[3 * j], centre[3 * j + 1], centre[3 * j + 2]}) < query[5 * q + 3] + radius[j] - query[5 * q + 4];
+      wrong += (got[q] != 0) != expected;
+      found += expected;
+    }
+    BOOST_TEST(wrong == 0, heads << " heads: " << wrong << " of " << queries << " queries answered unlike the search");
+    BOOST_TEST(found > queries / 20);  // the queries met spheres often, inside the box and out
+  }
+}
+
+// The world's test of a draw (blaze/scene/world_block.hpp) answers where the particles live as
+// WorldOverlapCheck does on the host: walls with and without rims (one a [mill]'s), a drum and a
+// mesh of 200 triangles (a bumpy floor), for 20 000 spheres of two sizes all over them.
+struct BlockedAt {
+  WorldBlockView world;
+  const double* sphere;  // x, y, z, r
+  std::uint8_t* out;
+  BLAZE_HD void operator()(Index k) const {
+    const double* v = sphere + 4 * k;
+    out[k] = world.blocked({v[0], v[1], v[2]}, v[3]) ? 1 : 0;
+  }
+};
+BOOST_AUTO_TEST_CASE(the_world_test_answers_alike_where_the_particles_live) {
+  using V = Vec3<double>;
+  Scene s;
+  s.path = "world.toml";
+  ParticleTypeSpec bead;
+  bead.name = "bead", bead.radius = 0.01;
+  s.types.push_back(bead);
+  WallSpec side, rimless, mill;
+  side.vertices = {{0.3, -0.2, -0.2}, {0.3, 0.2, -0.2}, {0.3, 0.2, 0.2}, {0.3, -0.2, 0.2}};
+  rimless.vertices = {{-0.2, -0.2, -0.3}, {0.2, -0.2, -0.3}, {0.2, 0.2, -0.3}, {-0.2, 0.2, -0.3}}, rimless.rim_edges = 0;
+  mill.name = "mill lifter", mill.vertices = {{-0.3, 0.25, -0.1}, {-0.3, 0.25, 0.1}, {-0.1, 0.25, 0.1}, {-0.1, 0.25, -0.1}};
+  s.walls = {side, rimless, mill};
+  CylinderSpec drum;
+  drum.origin = {0, 0, -0.35}, drum.axis = {0, 0, 1}, drum.radius = 0.4, drum.length = 0.7;
+  s.cylinders = {drum};
+  MeshSpec floor;
+  floor.name = "floor";
+  const int cells = 10;
+  for (int i = 0; i <= cells; ++i)
+    for (int k = 0; k <= cells; ++k)
+      floor.mesh.vertices.push_back({-0.25 + 0.05 * i, -0.15 + 0.01 * ((i * 7 + k * 3) % 5), -0.25 + 0.05 * k});
+  for (int i = 0; i < cells; ++i)
+    for (int k = 0; k < cells; ++k) {
+      const int a = i * (cells + 1) + k, b = a + cells + 1;
+      floor.mesh.triangles.push_back({a, a + 1, b}), floor.mesh.triangles.push_back({a + 1, b + 1, b});
+    }
+  floor.mesh.file_index.resize(floor.mesh.triangles.size());
+  s.meshes = {floor};
+  const WorldOverlapCheck check(s, 1e-9 * 0.01);
+  const WorldBlockArrays<DefaultSpace> arrays(check);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-0.45, 0.45);
+  const int n = 20000;
+  std::vector<double> sphere(4 * n);
+  for (int k = 0; k < n; ++k) sphere[4 * k] = u(rng), sphere[4 * k + 1] = u(rng), sphere[4 * k + 2] = u(rng), sphere[4 * k + 3] = k % 2 ? 0.01 : 0.004;
+  Buffer<double, DefaultSpace> sphere_d(sphere.size());
+  Buffer<std::uint8_t, DefaultSpace> out(n);
+  from_host(sphere_d, sphere);
+  for_each(DefaultSpace{}, n, BlockedAt{arrays.view(), sphere_d.data(), out.data()});
+  const std::vector<std::uint8_t> got = to_host(out, n);
+  const std::vector<V> no_vertices;
+  long blocked = 0, wrong = 0;
+  for (int k = 0; k < n; ++k) {
+    const bool expected = check.blocked({sphere[4 * k], sphere[4 * k + 1], sphere[4 * k + 2]}, sphere[4 * k + 3], no_vertices);
+    wrong += (got[k] != 0) != expected;
+    blocked += expected;
+  }
+  BOOST_TEST(wrong == 0, wrong << " of " << n << " spheres answered unlike the host");
+  BOOST_TEST(blocked > n / 10);  // every kind of object refused some, and some were let through
+  BOOST_TEST(blocked < n - n / 10);
 }
 
 // The contact store through an insertion: a bed fed for 0.1 s, at 0.3 s (linear springs on every contact,

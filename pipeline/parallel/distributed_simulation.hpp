@@ -48,6 +48,7 @@ template <class Sim>
 class DistributedSimulation {
  public:
   using Real = typename Sim::Real;
+  using space_type = typename Sim::space_type;
 
   // Every rank passes the whole initial state (the same on each); each keeps its box's part.
   template <class Laws, class Shape>
@@ -260,6 +261,19 @@ class DistributedSimulation {
       const std::vector<double> rk = in.template array<double>();
       centre.insert(centre.end(), ck.begin(), ck.end()), radius.insert(radius.end(), rk.begin(), rk.end());
     }
+  }
+  // The same as x, y, z, r in `out` (4 reals a particle, on the particles' space); returns how many.
+  Index spheres_in_box(const Vec3<double>& lo, const Vec3<double>& hi, Buffer<Real, space_type>& out) {
+    std::vector<Vec3<double>> c;
+    std::vector<double> r;
+    particles_in_box(lo, hi, c, r);
+    std::vector<Real> v(4 * c.size());
+    for (std::size_t k = 0; k < c.size(); ++k)
+      v[4 * k] = static_cast<Real>(c[k].x), v[4 * k + 1] = static_cast<Real>(c[k].y), v[4 * k + 2] = static_cast<Real>(c[k].z),
+               v[4 * k + 3] = static_cast<Real>(r[k]);
+    out.ensure(v.size());
+    copy_n(v.data(), v.size(), out.data(), Host{}, space_type{});
+    return static_cast<Index>(c.size());
   }
   // A batch every rank holds alike: ids as one process gives them (in batch order from the next
   // id), each rank inserts the particles its box holds, then a collective rebuild sends ghosts.

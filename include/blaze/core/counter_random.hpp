@@ -9,22 +9,23 @@
 // take it. Not for cryptography; for placing particles and jittering velocities.
 #pragma once
 #include <cstdint>
+#include "blaze/config.hpp"
 
 namespace blaze {
 
 class CounterEngine {
  public:
   using result_type = std::uint64_t;
-  static constexpr result_type min() { return 0; }
-  static constexpr result_type max() { return ~result_type{0}; }
-  static constexpr std::uint64_t mix(std::uint64_t z) {
+  BLAZE_HD static constexpr result_type min() { return 0; }
+  BLAZE_HD static constexpr result_type max() { return ~result_type{0}; }
+  BLAZE_HD static constexpr std::uint64_t mix(std::uint64_t z) {
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
     return z ^ (z >> 31);
   }
   // Draw k of the stream `key`.
-  CounterEngine(std::uint64_t key, std::uint64_t k) : state_(mix(key ^ mix(k + 0x9e3779b97f4a7c15ull))) {}
-  result_type operator()() { return mix(state_ += 0x9e3779b97f4a7c15ull); }
+  BLAZE_HD CounterEngine(std::uint64_t key, std::uint64_t k) : state_(mix(key ^ mix(k + 0x9e3779b97f4a7c15ull))) {}
+  BLAZE_HD result_type operator()() { return mix(state_ += 0x9e3779b97f4a7c15ull); }
 
  private:
   std::uint64_t state_;

@@ -64,6 +64,16 @@ void for_each(Cuda, Index n, const F& f) {
 }
 #endif
 
+// *p = v, returning what *p held, atomically among the threads of one for_each (a linked list
+// built from many threads: kernels/placement.hpp).
+BLAZE_HD inline int atomic_exchange(int* p, int v) {
+#if defined(__CUDA_ARCH__)
+  return atomicExch(p, v);
+#else
+  return __atomic_exchange_n(p, v, __ATOMIC_RELAXED);
+#endif
+}
+
 // data[i] = value for i in [0, n): for_each(space, n, Fill<T>{data, value}).
 template <class T>
 struct Fill {

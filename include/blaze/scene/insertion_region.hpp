@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include "blaze/config.hpp"
 #include "blaze/core/vec3.hpp"
 
 namespace blaze {
@@ -25,20 +26,28 @@ struct InsertionRegion {
   Vec3<double> centre{0, 0, 0}, axis{0, 0, 1};  // m, unit; cylinder and disc (zero otherwise: the identity text prints them)
   double radius = 0, length = 0;        // m
 
+  // A number uniform in [0, 1) from a 64-bit engine of full range (CounterEngine, mt19937_64):
+  // the draw over 2^64, below 1 (std::generate_canonical<double, 53> of libstdc++, which
+  // std::uniform_real_distribution<double>(0, 1) returns, bit for bit), on host and device.
+  template <class Rng>
+  BLAZE_HD static double unit(Rng& rng) {
+    static_assert(Rng::min() == 0 && Rng::max() == ~0ull, "a 64-bit engine of full range");
+    const double u = static_cast<double>(rng()) * 0x1p-64;
+    return u < 1 ? u : 0x1.fffffffffffffp-1;
+  }
   // A centre for a particle of bounding radius r (m).
   template <class Rng>
-  Vec3<double> draw(Rng& rng, double r) const {
-    std::uniform_real_distribution<double> u(0, 1);
+  BLAZE_HD Vec3<double> draw(Rng& rng, double r) const {
     if (kind == RegionKind::box) {
-      auto along = [&](double a, double b) { return b - a > 2 * r ? a + r + (b - a - 2 * r) * u(rng) : 0.5 * (a + b); };
+      auto along = [&](double a, double b) { return b - a > 2 * r ? a + r + (b - a - 2 * r) * unit(rng) : 0.5 * (a + b); };
       const double x = along(lo.x, hi.x), y = along(lo.y, hi.y), z = along(lo.z, hi.z);
       return {x, y, z};
     }
-    const double s = kind == RegionKind::disc ? 0.0 : length > 2 * r ? r + (length - 2 * r) * u(rng) : 0.5 * length;
-    const double rho = std::max(radius - r, 0.0) * std::sqrt(u(rng)), t = 2 * M_PI * u(rng);
+    const double s = kind == RegionKind::disc ? 0.0 : length > 2 * r ? r + (length - 2 * r) * unit(rng) : 0.5 * length;
+    const double rho = ::fmax(radius - r, 0.0) * ::sqrt(unit(rng)), t = 2 * M_PI * unit(rng);
     Vec3<double> e1, e2;
     basis(e1, e2);
-    return centre + axis * s + (e1 * std::cos(t) + e2 * std::sin(t)) * rho;
+    return centre + axis * s + (e1 * ::cos(t) + e2 * ::sin(t)) * rho;
   }
 
   // The region's bounding box (m).
@@ -81,8 +90,8 @@ struct InsertionRegion {
   }
 
  private:
-  void basis(Vec3<double>& e1, Vec3<double>& e2) const {
-    const Vec3<double> helper = std::fabs(axis.x) < 0.9 ? Vec3<double>{1, 0, 0} : Vec3<double>{0, 1, 0};
+  BLAZE_HD void basis(Vec3<double>& e1, Vec3<double>& e2) const {
+    const Vec3<double> helper = ::fabs(axis.x) < 0.9 ? Vec3<double>{1, 0, 0} : Vec3<double>{0, 1, 0};
     e1 = cross(axis, helper);
     e1 = e1 * (1 / norm(e1));
     e2 = cross(axis, e1);

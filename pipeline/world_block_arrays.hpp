@@ -1,0 +1,54 @@
+// The arrays a WorldBlockView reads (blaze/scene/world_block.hpp: the initial world's test of a
+// sphere), copied from a WorldOverlapCheck to a memory space: a feeder's rounds test their draws
+// where the particles live (pipeline/feeder.hpp, kernels/placement.hpp). Move-only; the view
+// points into its buffers.
+#pragma once
+#include <cstddef>
+#include <vector>
+#include "blaze/exec/buffer.hpp"
+#include "blaze/scene/world_block.hpp"
+#include "blaze/scene/world_overlap.hpp"
+
+namespace blaze {
+
+template <class Space>
+class WorldBlockArrays {
+ public:
+  explicit WorldBlockArrays(const WorldOverlapCheck& check) {
+    upload(cylinders_, check.cylinders());
+    upload(polygons_, check.polygons());
+    upload(mill_parts_, check.mill_parts());
+    const std::size_t meshes = check.mesh_bins().size();
+    starts_.resize(meshes), entries_.resize(meshes), corners_.resize(meshes);
+    std::vector<MeshBlockView> views(meshes);
+    for (std::size_t k = 0; k < meshes; ++k) {
+      const MeshBinsHost& b = check.mesh_bins()[k];
+      upload(starts_[k], b.start);
+      upload(entries_[k], b.entry);
+      upload(corners_[k], check.mesh_corners()[k]);
+      views[k] = {{b.origin, 1 / b.cell, b.nx, b.ny, b.nz, starts_[k].data(), entries_[k].data()}, corners_[k].data()};
+    }
+    upload(meshes_, views);
+    view_.cylinder = cylinders_.data(), view_.cylinders = static_cast<int>(check.cylinders().size());
+    view_.polygon = polygons_.data(), view_.mill_part = mill_parts_.data(), view_.polygons = static_cast<int>(check.polygons().size());
+    view_.mesh = meshes_.data(), view_.meshes = static_cast<int>(meshes);
+    view_.slack = check.slack();
+  }
+  const WorldBlockView& view() const { return view_; }
+
+ private:
+  template <class T>
+  static void upload(Buffer<T, Space>& b, const std::vector<T>& v) {
+    b.resize(v.size());
+    if (!v.empty()) copy_n(v.data(), v.size(), b.data(), Host{}, Space{});
+  }
+  Buffer<Cylinder<double>, Space> cylinders_;
+  Buffer<PlanarPolygon<double>, Space> polygons_;
+  Buffer<std::uint8_t, Space> mill_parts_;
+  std::vector<Buffer<int, Space>> starts_, entries_;
+  std::vector<Buffer<Vec3<double>, Space>> corners_;
+  Buffer<MeshBlockView, Space> meshes_;
+  WorldBlockView view_;
+};
+
+}  // namespace blaze
