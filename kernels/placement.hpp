@@ -1,9 +1,11 @@
 // A feeder's rounds of random sequential addition (pipeline/feeder.hpp), where the particles live:
-// spheres in hashed cells (SphereCellsView), the candidates' draws and tests (DrawCandidates), and
-// the candidates put into cells (PutCandidates) and tested against the round's earlier ones
-// (TestAgainstEarlier). One code on the host (OpenMP) and the GPU; every answer a kernel reads
-// from the cells is a yes or no, so the order in which threads link spheres into a cell changes
-// nothing, and a round gives the same centres on any number of threads.
+// spheres in hashed cells (SphereCellsView), the draws and tests of the particles due
+// (DrawCandidates), the round's candidates put into cells (PutCandidates) and tested against the
+// earlier ones (TestAgainstEarlier), the kept added to what is there (KeepCandidates). Particles
+// are numbered by their place among those due, so no round needs a scan: a kernel runs over all of
+// them and those placed before skip. One code on the host (OpenMP) and the GPU; every answer a
+// kernel reads from the cells is a yes or no, so the order in which threads link spheres into a
+// cell changes nothing, and a round gives the same centres on any number of threads.
 //
 // Cells: cubes of side `cell` (>= 2 r_max) from `lo`, each hashed into a table of a power of two
 // heads (cells beyond a box need no room; two cells may share a head, which only lengthens a
@@ -70,9 +72,9 @@ struct PutFound {
   }
 };
 
-// Candidate j of a round (the open particle open[j], radius radius[open[j]]) draws centres from
-// its own stream (seed, first + j), up to `draws`, until one lies in the domain, clear of the
-// entries of `occupied` and of the world: centre[3j..], and ok[j] = 1 when one did.
+// A round over the particles due [0, want): each particle k not yet placed draws centres from its
+// own stream (seed, first + k), up to `draws`, until one lies in the domain, clear of the entries
+// of `occupied` and of the world: centre[3k..], and ok[k] = 1 when one did (0 for the placed).
 struct DrawCandidates {
   SphereCellsView occupied;
   WorldBlockView world;
@@ -80,56 +82,74 @@ struct DrawCandidates {
   Vec3<double> domain_lo, domain_hi;  // m
   std::uint64_t seed, first;
   int draws;
-  const int* open;
-  const double* radius;  // m, per pending particle
-  double* centre;        // m, 3 per candidate
+  const double* radius;         // m, per particle due
+  const std::uint8_t* placed;   // per particle due: placed in an earlier round
+  double* centre;               // m, 3 per particle due
   std::uint8_t* ok;
 
   BLAZE_HD bool inside_domain(const Vec3<double>& x, double r) const {
     return x.x - r >= domain_lo.x && x.x + r <= domain_hi.x && x.y - r >= domain_lo.y && x.y + r <= domain_hi.y &&
            x.z - r >= domain_lo.z && x.z + r <= domain_hi.z;
   }
-  BLAZE_HD void operator()(Index j) const {
-    CounterEngine e(seed, first + static_cast<std::uint64_t>(j));
-    const double r = radius[open[j]];
+  BLAZE_HD void operator()(Index k) const {
+    ok[k] = 0;
+    if (placed[k]) return;
+    CounterEngine e(seed, first + static_cast<std::uint64_t>(k));
+    const double r = radius[k];
     bool clear = false;
     Vec3<double> x{0, 0, 0};
     for (int t = 0; t < draws && !clear; ++t) {
       x = region.draw(e, r);
       clear = inside_domain(x, r) && !occupied.overlapping(x, r, 0, 0x7fffffff) && !world.blocked(x, r);
     }
-    centre[3 * j] = x.x, centre[3 * j + 1] = x.y, centre[3 * j + 2] = x.z;
-    ok[j] = clear ? 1 : 0;
+    centre[3 * k] = x.x, centre[3 * k + 1] = x.y, centre[3 * k + 2] = x.z;
+    ok[k] = clear ? 1 : 0;
   }
 };
 
-// The candidates that passed (entry[j] >= 0) into `cells` as entry base + entry[j].
+// The round's candidates that passed (ok[k]) into `cells` as entry k, so that each can be tested
+// against the earlier ones (TestAgainstEarlier).
 struct PutCandidates {
   SphereCellsView cells;
-  const int* open;
   const double* radius;
   const double* centre;
-  const int* entry;
-  int base;
-  BLAZE_HD void operator()(Index j) const {
-    if (entry[j] < 0) return;
-    cells.put(base + entry[j], {centre[3 * j], centre[3 * j + 1], centre[3 * j + 2]}, radius[open[j]]);
+  const std::uint8_t* ok;
+  BLAZE_HD void operator()(Index k) const {
+    if (ok[k]) cells.put(k, {centre[3 * k], centre[3 * k + 1], centre[3 * k + 2]}, radius[k]);
   }
 };
 
-// A passed candidate that overlaps an earlier one of its round (in `cells` below its own entry)
-// is not kept: ok[j] = 0.
+// A candidate that overlaps a candidate of its round before it (in `cells` below its own entry;
+// passed itself, whether or not it is kept) is not kept: ok[k] = 0.
 struct TestAgainstEarlier {
   SphereCellsView cells;
-  const int* open;
   const double* radius;
   const double* centre;
-  const int* entry;
   std::uint8_t* ok;
-  BLAZE_HD void operator()(Index j) const {
-    if (entry[j] < 0) return;
-    if (cells.overlapping({centre[3 * j], centre[3 * j + 1], centre[3 * j + 2]}, radius[open[j]], 0, entry[j])) ok[j] = 0;
+  BLAZE_HD void operator()(Index k) const {
+    if (ok[k] && cells.overlapping({centre[3 * k], centre[3 * k + 1], centre[3 * k + 2]}, radius[k], 0, k)) ok[k] = 0;
   }
+};
+
+// The kept (ok[k]) join `occupied` as entry base + k, and are placed at their centre.
+struct KeepCandidates {
+  SphereCellsView occupied;
+  const double* radius;
+  const double* centre;
+  const std::uint8_t* ok;
+  int base;
+  std::uint8_t* placed;
+  BLAZE_HD void operator()(Index k) const {
+    if (!ok[k]) return;
+    occupied.put(base + k, {centre[3 * k], centre[3 * k + 1], centre[3 * k + 2]}, radius[k]);
+    placed[k] = 1;
+  }
+};
+
+// 1 while particle k is not placed (reduce_max over the particles due: is any left?).
+struct StillOpen {
+  const std::uint8_t* placed;
+  BLAZE_HD int operator()(Index k) const { return placed[k] ? 0 : 1; }
 };
 
 }  // namespace blaze

@@ -45,6 +45,7 @@
 #include "blaze/scene/scene.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/exec/buffer.hpp"
+#include "blaze/exec/primitives.hpp"
 #include "blaze/scene/world_overlap.hpp"
 #include "kernels/placement.hpp"
 #include "pipeline/world_block_arrays.hpp"
@@ -108,61 +109,35 @@ class Feeder {
     SphereCellsView occupied = lay_cells(d.head, d.next, d.sphere, capacity, lo - margin, reach, r_max);
     for_each(Space{}, present, PutFound<Real>{occupied, d.found.data(), 0});
     if (!d.world) d.world.emplace(world_);
-    std::vector<int>& open = scratch_.open;
-    open.resize(want);
-    for (std::size_t k = 0; k < want; ++k) open[k] = static_cast<int>(k);
-    std::vector<Vec3<double>>& at = scratch_.at;
-    std::vector<char>& placed = scratch_.placed;
-    at.resize(want), placed.assign(want, 0);
     upload(d.radius, pending_.data(), want);
+    const int due = static_cast<int>(want);
+    d.placed.ensure(want), d.centre.ensure(3 * want), d.ok.ensure(want);
+    for_each(Space{}, due, Fill<std::uint8_t>{d.placed.data(), 0});
     const auto found_at = std::chrono::steady_clock::now();
     // Rounds of parallel random sequential addition (kernels/placement.hpp): every particle still
     // open draws centres (its own counter-based stream: the same on any number of threads), kept
     // when it is clear of the particles present and placed, of the world and of the domain's
     // faces, and of every candidate of the round before it (so candidates need not be tested one
     // by one). The open ones draw again, up to kTries rounds; then the region counts as full until
-    // the next insertion. The draws and tests run where the particles live; the host numbers each
-    // round's candidates (a byte and an index a candidate each way).
-    int occupied_size = present;
-    std::vector<int>& entry = scratch_.entry;
-    std::vector<int>& still = scratch_.still;
-    for (int round = 0; round < kTries && !open.empty(); ++round) {
+    // the next insertion. The rounds run where the particles live; a round reads back one number
+    // (is any particle left?), the placed centres come back at the end.
+    bool open = due > 0;
+    for (int round = 0; round < kTries && open; ++round) {
       ++rounds_;
-      const int m = static_cast<int>(open.size());
-      upload(d.open, open.data(), open.size());
-      d.centre.ensure(3 * open.size()), d.ok.ensure(open.size()), d.entry.ensure(open.size());
-      for_each(Space{}, m, DrawCandidates{occupied, d.world->view(), spec_.region, s_.domain_lo, s_.domain_hi, spec_.seed, draws_, kDrawsPerRound,
-                                          d.open.data(), d.radius.data(), d.centre.data(), d.ok.data()});
-      draws_ += static_cast<std::uint64_t>(m);
-      // the candidates that passed, numbered in candidate order, against each other
-      std::vector<std::uint8_t> ok = to_host(d.ok, open.size());
-      entry.resize(open.size());
-      int passed = 0;
-      for (int j = 0; j < m; ++j) entry[static_cast<std::size_t>(j)] = ok[static_cast<std::size_t>(j)] ? passed++ : -1;
-      if (passed == 0) continue;
-      upload(d.entry, entry.data(), entry.size());
-      const SphereCellsView fresh = lay_cells(d.fresh_head, d.fresh_next, d.fresh_sphere, static_cast<std::size_t>(passed), lo - margin, reach, r_max);
-      for_each(Space{}, m, PutCandidates{fresh, d.open.data(), d.radius.data(), d.centre.data(), d.entry.data(), 0});
-      for_each(Space{}, m, TestAgainstEarlier{fresh, d.open.data(), d.radius.data(), d.centre.data(), d.entry.data(), d.ok.data()});
-      // the kept join the particles present (numbered after them, in candidate order)
-      ok = to_host(d.ok, open.size());
-      const std::vector<double> centre = to_host(d.centre, 3 * open.size());
-      still.clear();
-      int kept = 0;
-      for (int j = 0; j < m; ++j) {
-        const std::size_t c = static_cast<std::size_t>(j), k = static_cast<std::size_t>(open[c]);
-        if (!ok[c]) {
-          entry[c] = -1, still.push_back(open[c]);
-          continue;
-        }
-        entry[c] = kept++;
-        at[k] = {centre[3 * c], centre[3 * c + 1], centre[3 * c + 2]}, placed[k] = 1;
-      }
-      upload(d.entry, entry.data(), entry.size());
-      for_each(Space{}, m, PutCandidates{occupied, d.open.data(), d.radius.data(), d.centre.data(), d.entry.data(), occupied_size});
-      occupied_size += kept;
-      open.swap(still);
+      for_each(Space{}, due, DrawCandidates{occupied, d.world->view(), spec_.region, s_.domain_lo, s_.domain_hi, spec_.seed, draws_,
+                                            kDrawsPerRound, d.radius.data(), d.placed.data(), d.centre.data(), d.ok.data()});
+      draws_ += static_cast<std::uint64_t>(due);
+      const SphereCellsView fresh = lay_cells(d.fresh_head, d.fresh_next, d.fresh_sphere, want, lo - margin, reach, r_max);
+      for_each(Space{}, due, PutCandidates{fresh, d.radius.data(), d.centre.data(), d.ok.data()});
+      for_each(Space{}, due, TestAgainstEarlier{fresh, d.radius.data(), d.centre.data(), d.ok.data()});
+      for_each(Space{}, due, KeepCandidates{occupied, d.radius.data(), d.centre.data(), d.ok.data(), present, d.placed.data()});
+      open = reduce_max(Space{}, due, StillOpen{d.placed.data()}, 0) > 0;
     }
+    const std::vector<std::uint8_t> placed = to_host(d.placed, want);
+    const std::vector<double> centre = to_host(d.centre, 3 * want);
+    std::vector<Vec3<double>>& at = scratch_.at;
+    at.resize(want);
+    for (std::size_t k = 0; k < want; ++k) at[k] = {centre[3 * k], centre[3 * k + 1], centre[3 * k + 2]};
     // the placed, in the order drawn; the rest stay pending, in order, for the next insertion
     std::vector<std::size_t>& chosen = scratch_.chosen;
     std::vector<double>& left = scratch_.left;
@@ -387,17 +362,15 @@ class Feeder {
   struct Scratch {  // not state: placement's host buffers, kept between insertions
     std::vector<Vec3<double>> at;
     std::vector<double> left;
-    std::vector<int> open, entry, still;
-    std::vector<char> placed;
     std::vector<std::size_t> chosen;
   } scratch_;
   // Not state: the rounds' arrays where the particles live (kernels/placement.hpp), kept between
   // insertions.
   struct Rounds {
     Buffer<Real, Space> found;  // the particles present: x, y, z, r
-    Buffer<int, Space> head, next, fresh_head, fresh_next, open, entry;
+    Buffer<int, Space> head, next, fresh_head, fresh_next;
     Buffer<double, Space> sphere, fresh_sphere, radius, centre;
-    Buffer<std::uint8_t, Space> ok;
+    Buffer<std::uint8_t, Space> ok, placed;
     std::optional<WorldBlockArrays<Space>> world;  // uploaded at the first insertion
   } rounds_scratch_;
 
@@ -405,10 +378,6 @@ class Feeder {
   static void upload(Buffer<T, Space>& b, const T* v, std::size_t n) {
     b.ensure(n);
     copy_n(v, n, b.data(), Host{}, Space{});
-  }
-  template <class T>
-  static void upload(Buffer<T, Space>& b, const std::vector<T>& v) {
-    upload(b, v.data(), v.size());
   }
   // Cells for up to `capacity` spheres of radius <= r_max, `cell` wide from lo, emptied.
   static SphereCellsView lay_cells(Buffer<int, Space>& head, Buffer<int, Space>& next, Buffer<double, Space>& sphere, std::size_t capacity,
@@ -419,7 +388,6 @@ class Feeder {
     for_each(Space{}, static_cast<Index>(heads), Fill<int>{head.data(), -1});
     return {lo, 1 / cell, r_max, static_cast<std::uint32_t>(heads - 1), head.data(), next.data(), sphere.data()};
   }
-
 };
 
 }  // namespace blaze

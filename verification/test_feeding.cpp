@@ -496,11 +496,7 @@ BOOST_AUTO_TEST_CASE(hashed_cells_find_what_a_search_of_every_sphere_finds) {
   std::uniform_real_distribution<double> u(-0.3, 1.3), size(0.2, 1.0);
   const int n = 1500, queries = 3000;
   std::vector<double> centre(3 * n), radius(n);
-  std::vector<int> open(n), entry(n);
-  for (int k = 0; k < n; ++k) {
-    centre[3 * k] = u(rng), centre[3 * k + 1] = u(rng), centre[3 * k + 2] = u(rng), radius[k] = r_max * size(rng);
-    open[k] = k, entry[k] = k;
-  }
+  for (int k = 0; k < n; ++k) centre[3 * k] = u(rng), centre[3 * k + 1] = u(rng), centre[3 * k + 2] = u(rng), radius[k] = r_max * size(rng);
   std::vector<double> query(5 * queries);
   std::vector<int> before(queries);
   for (int q = 0; q < queries; ++q) {
@@ -509,14 +505,15 @@ BOOST_AUTO_TEST_CASE(hashed_cells_find_what_a_search_of_every_sphere_finds) {
     before[q] = q % 2 == 0 ? 0x7fffffff : n / 2;
   }
   for (const std::uint32_t heads : {64u, 4096u}) {
-    Buffer<int, Space> head(heads), next(n), open_d(n), entry_d(n), before_d(queries);
+    Buffer<int, Space> head(heads), next(n), before_d(queries);
     Buffer<double, Space> sphere(4 * n), centre_d(3 * n), radius_d(n), query_d(5 * queries);
-    Buffer<std::uint8_t, Space> hit(queries);
-    from_host(open_d, open), from_host(entry_d, entry), from_host(centre_d, centre), from_host(radius_d, radius);
+    Buffer<std::uint8_t, Space> hit(queries), all(n);
+    from_host(centre_d, centre), from_host(radius_d, radius);
+    for_each(Space{}, n, Fill<std::uint8_t>{all.data(), 1});
     from_host(query_d, query), from_host(before_d, before);
     for_each(Space{}, static_cast<Index>(heads), Fill<int>{head.data(), -1});
     const SphereCellsView cells{V{0, 0, 0}, 1 / (2 * r_max), r_max, heads - 1, head.data(), next.data(), sphere.data()};
-    for_each(Space{}, n, PutCandidates{cells, open_d.data(), radius_d.data(), centre_d.data(), entry_d.data(), 0});
+    for_each(Space{}, n, PutCandidates{cells, radius_d.data(), centre_d.data(), all.data()});
     for_each(Space{}, queries, QueryCells{cells, query_d.data(), before_d.data(), hit.data()});
     const std::vector<std::uint8_t> got = to_host(hit, queries);
     long found = 0, wrong = 0;

@@ -31,7 +31,8 @@ struct InsertionRegion {
   // std::uniform_real_distribution<double>(0, 1) returns, bit for bit), on host and device.
   template <class Rng>
   BLAZE_HD static double unit(Rng& rng) {
-    static_assert(Rng::min() == 0 && Rng::max() == ~0ull, "a 64-bit engine of full range");
+    // (the engines' min() and max(), 0 and 2^64 - 1, are host functions: the size stands in)
+    static_assert(sizeof(typename Rng::result_type) == 8, "a 64-bit engine of full range");
     const double u = static_cast<double>(rng()) * 0x1p-64;
     return u < 1 ? u : 0x1.fffffffffffffp-1;
   }
