@@ -36,7 +36,8 @@ struct InsertionRegion {
     const double u = static_cast<double>(rng()) * 0x1p-64;
     return u < 1 ? u : 0x1.fffffffffffffp-1;
   }
-  // A centre for a particle of bounding radius r (m).
+  // A centre for a particle of bounding radius r (m). Host and device: the engine's operator()
+  // must be callable on both (CounterEngine; nvcc refuses a host-only engine such as mt19937_64).
   template <class Rng>
   BLAZE_HD Vec3<double> draw(Rng& rng, double r) const {
     if (kind == RegionKind::box) {
