@@ -1,9 +1,10 @@
 // The particles whose centre lies in an axis-aligned box, found on the particles' memory space
-// (a feeder's neighbourhood, Simulation::particles_in_box), in two passes over `parts` contiguous
+// (a feeder's neighbourhood, Simulation::spheres_in_box), in two passes over `parts` contiguous
 // ranges of the particles: each part counts its particles in the box, the host turns the counts
 // into offsets, and each part writes its particles' centre and radius from its offset on. The
-// result is in index order on every space, and what comes back is 4 B a part and 16 B (float) a
-// particle found, not a flag a particle (1 MB for 1e6 particles, scanned on one host thread).
+// result is in index order on every space and stays there (a feeder's rounds run on it); what
+// comes back is 4 B a part, not a flag a particle (1 MB for 1e6 particles, scanned on one host
+// thread before).
 #pragma once
 #include "blaze/config.hpp"
 #include "blaze/particles/particle_store.hpp"

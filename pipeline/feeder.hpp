@@ -19,9 +19,9 @@
 // (WorldOverlapCheck's test, as fills are: the world at its initial pose) and inside the domain.
 // That centre is kept when it also overlaps no candidate of the same round before it that passed
 // those tests. The rounds run where the particles live (kernels/placement.hpp: on the GPU for a
-// GPU run, on all host threads otherwise), the host numbering each round's candidates; after
-// kTries rounds the particles still open stay due (the region counts as full until the next
-// insertion). At the low fractions a feed region should have, a round places nearly all.
+// GPU run, on all host threads otherwise); after kTries rounds the particles still open stay due
+// (the region counts as full until the next insertion). At the low fractions a feed region should
+// have, a round places nearly all.
 // (Stop 32's one-at-a-time placement took 120% of the steps' time for 1e6 beads on the H200, the
 // host's parallel rounds 6-9%.)
 //

@@ -445,7 +445,7 @@ BOOST_AUTO_TEST_CASE(a_feed_restarts_bitwise) {
   std::filesystem::remove(path);
 }
 
-// Placement runs on all host threads (feeder.hpp: every candidate draws from its own counter-based
+// Placement runs on all host threads on the CPU (feeder.hpp: every candidate draws from its own counter-based
 // stream, conflicts go to the earlier candidate): one thread and three give the same particles,
 // bit for bit, in a region crowded enough that candidates of one round meet.
 BOOST_AUTO_TEST_CASE(placement_does_not_depend_on_the_thread_count) {

@@ -202,7 +202,7 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   const std::uint64_t builds_before = sim.neighbour_builds();
   sim.timer().enabled = o.phases;
   double output_seconds = 0;  // samples, frame downloads and checkpoints (the GPU idle meanwhile)
-  double feed_seconds = 0;    // the feeders' insertions (placement on the host, insertion, rebuild)
+  double feed_seconds = 0;    // the feeders' insertions (placement, insertion, rebuild)
   const auto loop_start = std::chrono::steady_clock::now();
   // A guard that trips (NaN/Inf, energy created) stops the run; the last sampled state is kept.
   const auto stop = [&](const std::exception& e) {

@@ -26,7 +26,7 @@
 // `blaze run`) is reduced over the ranks, each counting only its own particles (Simulation::
 // count_only: a pair with a ghost counts on the rank of its lower id), in rank order, so every
 // rank gets the same numbers and the guards stop every rank together. Feeders (pipeline/
-// feeder.hpp) run on every rank alike: particles_in_box gathers what is present from all ranks,
+// feeder.hpp) run on every rank alike: spheres_in_box gathers what is present from all ranks,
 // every rank places the same batch, and insert() keeps each rank's part with the ids one process
 // would give.
 #pragma once

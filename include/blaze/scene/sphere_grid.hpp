@@ -1,5 +1,6 @@
 // Spheres placed so far, for overlap tests while particles are placed: a scene's lattices, lists
-// and fills (scene_build.hpp) and a feeder's rounds (pipeline/feeder.hpp). Host only.
+// and fills (scene_build.hpp). Host only (a feeder's rounds run where the particles live, in the
+// hashed cells of kernels/placement.hpp).
 //
 // Cells at least `cell` wide over a box [lo, hi], each the head of a chain of its spheres (newest
 // first, through next_): an array over the box while it needs no more than max(4 per expected
@@ -7,13 +8,9 @@
 // particles in a huge domain), sit in a hash map. A query of (x, r) reads the cells within
 // r + r_max of x: 8 at most with cells 4 r_max wide, 27 with 2 r_max. (A hash map of vectors for
 // every cell, 27 cells a query, took half of a 4e6-ball fill's 100 s; an unordered_map of cells
-// cost ~1 us per placement, 10% of a 1e6-particle feed.)
+// cost ~1 us per placement, 10% of a 1e6-particle feed, when feeds used this grid.)
 //
-// Entries are numbered in the order they are put; a query sees only those below `before`,
-// whatever their order in a chain, so put() may fill numbered entries from many threads at once
-// (each links itself into its cell with an atomic exchange) and the queries give the same answers
-// on any number of threads: while concurrent_puts() holds and the centres lie in the box (a
-// feeder's do). Queries are const and may run on many threads at once, but not during puts.
+// Entries are numbered in the order they are added; a query names the entry it found.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -28,8 +25,6 @@ namespace blaze {
 
 class SphereGrid {
  public:
-  static constexpr long kAll = 0x7fffffffffffffffL;
-
   // r_max (m): no sphere put is larger; expected: about how many will be (sizes the array's cap).
   SphereGrid(const Vec3<double>& lo, const Vec3<double>& hi, double cell, double r_max, double expected = 0)
       : lo_(lo), hi_(hi), cell_(cell), r_max_(r_max) {
@@ -48,15 +43,14 @@ class SphereGrid {
     return lo.x == lo_.x && lo.y == lo_.y && lo.z == lo_.z && hi.x == hi_.x && hi.y == hi_.y && hi.z == hi_.z && cell == cell_ &&
            r_max == r_max_;
   }
-  // Some entry below `before` that (x, r) overlaps by more than `slack` (m), or -1.
-  long overlapping(const Vec3<double>& x, double r, double slack = 0, long before = kAll) const {
+  // Some entry that (x, r) overlaps by more than `slack` (m), or -1.
+  long overlapping(const Vec3<double>& x, double r, double slack = 0) const {
     const double reach = r + r_max_;
     const auto lo = cell_of(x - Vec3<double>{reach, reach, reach}), hi = cell_of(x + Vec3<double>{reach, reach, reach});
     for (long cx = lo[0]; cx <= hi[0]; ++cx)
       for (long cy = lo[1]; cy <= hi[1]; ++cy)
         for (long cz = lo[2]; cz <= hi[2]; ++cz)
           for (std::int64_t j = first(cx, cy, cz); j >= 0; j = next_[static_cast<std::size_t>(j)]) {
-            if (j >= before) continue;
             const Entry& q = entry_[static_cast<std::size_t>(j)];
             const double touch = r + q.r - slack, dx = x.x - q.x, dy = x.y - q.y, dz = x.z - q.z;
             if (dx * dx + dy * dy + dz * dz < touch * touch) return static_cast<long>(j);
@@ -64,32 +58,16 @@ class SphereGrid {
     return -1;
   }
 
-  // Entries 0 .. n-1 exist from here on (those beyond the old size to be put() before a query).
-  void resize(std::size_t n) { next_.resize(n), entry_.resize(n); }
   std::size_t size() const { return entry_.size(); }
-  // Whether put() may run on many threads (for centres in the box): the cells are an array.
-  bool concurrent_puts() const { return !head_.empty(); }
-  // Entry e (below size()) is the sphere (x, r), r <= r_max.
-  void put(std::size_t e, const Vec3<double>& x, double r) {
+  // A sphere (x, r), r <= r_max, as the next entry.
+  void add(const Vec3<double>& x, double r) {
+    if (!(r <= r_max_)) throw std::logic_error("sphere grid: a sphere larger than its r_max");
     const auto c = cell_of(x);
     std::int64_t* h = dense(c[0], c[1], c[2]);
     std::int64_t& head = h ? *h : far_.try_emplace(key(c[0], c[1], c[2]), -1).first->second;
-    entry_[e] = Entry{x.x, x.y, x.z, r};
-    next_[e] = __atomic_exchange_n(&head, static_cast<std::int64_t>(e), __ATOMIC_RELAXED);
-  }
-  void add(const Vec3<double>& x, double r) {
-    if (!(r <= r_max_)) throw std::logic_error("sphere grid: a sphere larger than its r_max");
-    resize(size() + 1);
-    put(size() - 1, x, r);
-  }
-  // Empties it, touching only the cells in use.
-  void clear() {
-    for (const Entry& q : entry_) {
-      const auto c = cell_of(Vec3<double>{q.x, q.y, q.z});
-      if (std::int64_t* h = dense(c[0], c[1], c[2])) *h = -1;
-    }
-    far_.clear();
-    resize(0);
+    entry_.push_back(Entry{x.x, x.y, x.z, r});
+    next_.push_back(head);
+    head = static_cast<std::int64_t>(entry_.size() - 1);
   }
 
  private:
