@@ -264,6 +264,8 @@ BOOST_AUTO_TEST_CASE(feeds_meet_their_rate_without_overlaps) {
       {"uniform from a cylinder, count 150", "type = \"bead\"\nrate = 2000\ncount = 150\nstart_time = 0.02\n"
                                              "region = { kind = \"cylinder\", centre = [0, 0.12, 0], axis = [0, 1, 0], radius = 0.03, length = 0.05 }\n"
                                              "size = { kind = \"uniform\", min = 2e-3, max = 3e-3 }"},
+      {"on a tilted disc, count 60", "type = \"bead\"\nrate = 600\ncount = 60\nvelocity = [0, -0.5, 0]\n"
+                                     "region = { kind = \"disc\", centre = [0, 0.15, 0], normal = [0.3, 1, 0.2], radius = 0.035 }\n"},
   };
   for (const auto& c : cases) {
     const Scene s = parse_scene(feed_scene(c.feed), "feed.toml");
