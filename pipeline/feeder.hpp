@@ -301,10 +301,6 @@ class Feeder {
     const double k = r / type().bounding_radius;
     return density() * type().volume * k * k * k;
   }
-  bool inside_domain(const Vec3<double>& x, double r) const {
-    return x.x - r >= s_.domain_lo.x && x.x + r <= s_.domain_hi.x && x.y - r >= s_.domain_lo.y && x.y + r <= s_.domain_hi.y &&
-           x.z - r >= s_.domain_lo.z && x.z + r <= s_.domain_hi.z;
-  }
   // The batch of the placed particles chosen[i] (centres at[chosen[i]], radii pending_[chosen[i]]),
   // the i-th of them the feed's (inserted_ + i)-th: its velocity's jitter from that counter.
   void make_batch(ParticleState<Real>& batch, const std::vector<std::size_t>& chosen, const std::vector<Vec3<double>>& at) const {
