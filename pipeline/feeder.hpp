@@ -109,7 +109,7 @@ class Feeder {
     SphereCellsView occupied = lay_cells(d.head, d.next, d.sphere, capacity, lo - margin, reach, r_max);
     for_each(Space{}, present, PutFound<Real>{occupied, d.found.data(), 0});
     if (!d.world) d.world.emplace(world_);
-    upload(d.radius, pending_.data(), want);
+    copy_in(d.radius, pending_.data(), want);
     const int due = static_cast<int>(want);
     d.placed.ensure(want), d.centre.ensure(3 * want), d.ok.ensure(want);
     for_each(Space{}, due, Fill<std::uint8_t>{d.placed.data(), 0});
@@ -370,11 +370,6 @@ class Feeder {
     std::optional<WorldBlockArrays<Space>> world;  // uploaded at the first insertion
   } rounds_scratch_;
 
-  template <class T>
-  static void upload(Buffer<T, Space>& b, const T* v, std::size_t n) {
-    b.ensure(n);
-    copy_n(v, n, b.data(), Host{}, Space{});
-  }
   // Cells for up to `capacity` spheres of radius <= r_max, `cell` wide from lo, emptied.
   static SphereCellsView lay_cells(Buffer<int, Space>& head, Buffer<int, Space>& next, Buffer<double, Space>& sphere, std::size_t capacity,
                                    const Vec3<double>& lo, double cell, double r_max) {

@@ -454,8 +454,7 @@ class Simulation {
     Index found = 0;
     for (Index& c : offset) found += std::exchange(c, found);  // exclusive: each part's first
     if (found == 0) return 0;
-    query_offset_.ensure(offset.size());
-    copy_n(offset.data(), offset.size(), query_offset_.data(), Host{}, Space{});
+    copy_in(query_offset_, offset.data(), offset.size());
     out.ensure(4 * static_cast<std::size_t>(found));
     q.offset = query_offset_.data(), q.out = out.data();
     for_each(Space{}, parts, q);

@@ -15,20 +15,20 @@ template <class Space>
 class WorldBlockArrays {
  public:
   explicit WorldBlockArrays(const WorldOverlapCheck& check) {
-    upload(cylinders_, check.cylinders());
-    upload(polygons_, check.polygons());
-    upload(mill_parts_, check.mill_parts());
+    copy_in(cylinders_, check.cylinders());
+    copy_in(polygons_, check.polygons());
+    copy_in(mill_parts_, check.mill_parts());
     const std::size_t meshes = check.mesh_bins().size();
     starts_.resize(meshes), entries_.resize(meshes), corners_.resize(meshes);
     std::vector<MeshBlockView> views(meshes);
     for (std::size_t k = 0; k < meshes; ++k) {
       const MeshBinsHost& b = check.mesh_bins()[k];
-      upload(starts_[k], b.start);
-      upload(entries_[k], b.entry);
-      upload(corners_[k], check.mesh_corners()[k]);
+      copy_in(starts_[k], b.start);
+      copy_in(entries_[k], b.entry);
+      copy_in(corners_[k], check.mesh_corners()[k]);
       views[k] = {{b.origin, 1 / b.cell, b.nx, b.ny, b.nz, starts_[k].data(), entries_[k].data()}, corners_[k].data()};
     }
-    upload(meshes_, views);
+    copy_in(meshes_, views);
     view_.cylinder = cylinders_.data(), view_.cylinders = static_cast<int>(check.cylinders().size());
     view_.polygon = polygons_.data(), view_.mill_part = mill_parts_.data(), view_.polygons = static_cast<int>(check.polygons().size());
     view_.mesh = meshes_.data(), view_.meshes = static_cast<int>(meshes);
@@ -37,11 +37,6 @@ class WorldBlockArrays {
   const WorldBlockView& view() const { return view_; }
 
  private:
-  template <class T>
-  static void upload(Buffer<T, Space>& b, const std::vector<T>& v) {
-    b.resize(v.size());
-    if (!v.empty()) copy_n(v.data(), v.size(), b.data(), Host{}, Space{});
-  }
   Buffer<Cylinder<double>, Space> cylinders_;
   Buffer<PlanarPolygon<double>, Space> polygons_;
   Buffer<std::uint8_t, Space> mill_parts_;

@@ -271,8 +271,7 @@ class DistributedSimulation {
     for (std::size_t k = 0; k < c.size(); ++k)
       v[4 * k] = static_cast<Real>(c[k].x), v[4 * k + 1] = static_cast<Real>(c[k].y), v[4 * k + 2] = static_cast<Real>(c[k].z),
                v[4 * k + 3] = static_cast<Real>(r[k]);
-    out.ensure(v.size());
-    copy_n(v.data(), v.size(), out.data(), Host{}, space_type{});
+    copy_in(out, v);
     return static_cast<Index>(c.size());
   }
   // A batch every rank holds alike: ids as one process gives them (in batch order from the next

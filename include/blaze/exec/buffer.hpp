@@ -84,6 +84,17 @@ std::vector<T> to_host(const Buffer<T, Space>& b, std::size_t n) {
   copy_n(b.data(), n, out.data(), Space{}, Host{});
   return out;
 }
+// n values from the host into b's first n, growing it by ensure() (no reallocation while it is
+// large enough: scratch refilled at every insertion of a feed).
+template <class T, class Space>
+void copy_in(Buffer<T, Space>& b, const T* v, std::size_t n) {
+  b.ensure(n);
+  copy_n(v, n, b.data(), Host{}, Space{});
+}
+template <class T, class Space>
+void copy_in(Buffer<T, Space>& b, const std::vector<T>& v) {
+  copy_in(b, v.data(), v.size());
+}
 template <class T, class Space>
 void from_host(Buffer<T, Space>& b, const std::vector<T>& v) {
   b.resize(v.size());
