@@ -14,7 +14,10 @@
 // are kept, this run's added after them). Options: --out DIR, --skin S
 // (skin in radii, default 0.2), --pairs auto|both_sides|once (SimulationParams::pairs; auto:
 // polyhedra once, spheres from both sides), --min-n N, --max-n N, --mesh-n N (the mesh cases'
-// particles: default 1e6 on the GPU, 2e4 on the CPU), --tag TAG, --cases
+// particles: default 1e6 on the GPU, 2e4 on the CPU), --mesh-triangles T1,T2,... (the sphere bed's
+// box as meshes of about these many triangles, 0: its six polygons; default 0,1e3,1e4,1e5 and 1e6
+// on the GPU), --mesh-cubes T1,... (packed cubes on a floor of 1 polygon (0) or these triangles;
+// default 0,1e3,1e4,1e5; "none": no cube rows), --tag TAG, --cases
 // spheres,polyhedra,packed,surfaces,skip,mill,lifters,mesh,largest (default all but largest, lifters and mesh;
 // mill-turning: the turning lab mill alone).
 #include <algorithm>
@@ -106,6 +109,19 @@ int main(int argc, char** argv) {
   std::string cases = "spheres,history,polyhedra,packed,surfaces,skip,mill", tag_suffix;
   bool cases_given = false;
   long largest_spheres = 500000000, largest_cubes = 100000000, mesh_n = 0;
+  std::string mesh_triangles, mesh_cubes = "0,1000,10000,100000";
+  // "a,b,c" -> {a, b, c}; "none" -> {}
+  const auto longs = [](const std::string& list) {
+    std::vector<long> v;
+    if (list == "none") return v;
+    std::size_t at = 0;
+    while (at <= list.size()) {
+      const std::size_t comma = std::min(list.find(',', at), list.size());
+      v.push_back(std::stol(list.substr(at, comma - at)));
+      at = comma + 1;
+    }
+    return v;
+  };
   for (int a = 1; a + 1 < argc; ++a) {
     const std::string opt = argv[a];
     if (opt == "--out") out_dir = argv[a + 1];
@@ -124,6 +140,8 @@ int main(int argc, char** argv) {
     if (opt == "--max-n") max_n = std::stol(argv[a + 1]);
     if (opt == "--min-n") min_n = std::stol(argv[a + 1]);
     if (opt == "--mesh-n") mesh_n = std::stol(argv[a + 1]);
+    if (opt == "--mesh-triangles") mesh_triangles = argv[a + 1];
+    if (opt == "--mesh-cubes") mesh_cubes = argv[a + 1];
     if (opt == "--cases") cases = argv[a + 1], cases_given = true;
   }
   const auto wanted = [&](const char* name) { return ("," + cases + ",").find("," + std::string(name) + ",") != std::string::npos; };
@@ -228,9 +246,10 @@ int main(int argc, char** argv) {
     const long n = mesh_n > 0 ? mesh_n : gpu ? 1000000L : 20000L;
     std::vector<long> sizes_t = {0L, 1000L, 10000L, 100000L};
     if (gpu) sizes_t.push_back(1000000L);
+    if (!mesh_triangles.empty()) sizes_t = longs(mesh_triangles);
     for (long triangles : sizes_t) rows.push_back(mesh_box_case(n, triangles, 20, gpu ? 200 : 40));
     // packed cubes on a floor of 1 polygon or a mesh of 1e3-1e5 triangles (issue 20's polyhedron row)
-    for (long triangles : {0L, 1000L, 10000L, 100000L})
+    for (long triangles : longs(mesh_cubes))
       rows.push_back(polyhedron_case("cube", PolyScene::packed, n, 20, 60, 1, false, triangles));
     print_rows(rows, first);
   }

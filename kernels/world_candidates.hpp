@@ -2,12 +2,12 @@
 // so the world kernel tests those instead of every object (a mill's 99 shell, end-plate and
 // lifter faces: the thesis's 2D mill; 64 lifter rows of a SAG mill).
 // Built at each neighbour-list rebuild from the bounding sphere (x_i, r_i) and the objects as
-// placed then: object w is listed when some point of it lies within r_i + skin of x_i
+// placed then: object w is listed when some point of it lies within r_i + m of x_i
 // (within_reach, planar_polygon.hpp and cylinder.hpp; 1e-4 more for rounding; a mesh when its
 // bins, built with that reach or more, list triangles in x_i's cell). The list stays valid while no particle
 // has moved more than skin / 2 (the rebuild check) and no point of a moving object has moved
-// more than skin / 2: together less than the skin, so a body inside its bounding sphere that
-// touches w later was within reach of it at the build. The rebuild check (broad_phase_kernels.hpp)
+// more than skin / 2: m is the skin when objects move, skin / 2 in a still world, so a body
+// inside its bounding sphere that touches w later was within reach of it at the build. The rebuild check (broad_phase_kernels.hpp)
 // also trips when the world's step passes the last step the objects' peak speeds allow
 // (pipeline/world_candidates.hpp). Objects are listed in index order, so the world kernel sums
 // its contacts in the same order as a full pass: the forces are bitwise those of the full pass.
@@ -17,9 +17,11 @@
 // in ascending index, as its bins' cell lists them), and a mesh is listed only when some of its
 // triangles are. The mesh contact then tests those few instead of its cell's (at 1e5 triangles
 // ~40 for a ball near the dense bed's wall): a triangle it can touch before the next rebuild
-// lies within r_i + skin now, by the argument above, and one farther than the particle's
+// lies within r_i + m now, by the argument above, and one farther than the particle's
 // bounding radius offers no contact (mesh_wall.hpp, polyhedron_shape.hpp), so the contacts are
-// bitwise those of the cell's triangles. The count is kept even past the room (up to 65535), so
+// bitwise those of the cell's triangles. For spheres the triangles of a flat patch other than the
+// one a sphere lies well over leave the list (drop_flat_neighbours, mesh_wall.hpp: they cannot
+// offer it a contact before the next rebuild). The count is kept even past the room (up to 65535), so
 // the pipeline grows the room to fit; a particle past it tests its cell.
 #pragma once
 #include <cstdint>
@@ -33,13 +35,16 @@ struct BuildWorldCandidates {
   Vec3Field<Real> position;
   const Real* radius;
   WorldView<Real> world;
-  Real margin;  // m, the skin
+  // m: how far a particle may move relative to an object before the next rebuild (skin / 2 in a
+  // still world, the skin when objects move: pipeline/world_candidates.hpp)
+  Real margin;
   std::uint16_t* object;
   std::uint8_t* count;
   Index stride;
   int* triangle = nullptr;  // triangle lists (null: none)
   std::uint16_t* triangle_count = nullptr;
   int triangle_capacity = 0;
+  bool drop_flat = false;  // spheres: a flat patch's far triangles leave the list (drop_flat_neighbours)
 
   BLAZE_HD void operator()(Index i) const {
     const Vec3<Real> x = position.get(i);
@@ -67,12 +72,18 @@ struct BuildWorldCandidates {
       const Pose<Real>* pose = world.pose_of(w);
       const Vec3<Real> xr = pose ? pose->to_reference(x) : x;
       int found = 0;
+      const int first = tc;
       for_each_near_triangle(world.meshes[k], xr, TriangleList{}, [&](int t) {
         if (!triangle_near(world.surface, t, xr, reach)) return;
         if (tc < triangle_capacity) triangle[static_cast<std::size_t>(tc) * stride + i] = t;
         if (tc < 65535) ++tc;
         ++found;
       });
+      if (drop_flat && found > 1 && tc <= triangle_capacity) {  // all of them stored
+        found = drop_flat_neighbours(world.surface, xr, radius[i], margin, triangle + static_cast<std::size_t>(first) * stride + i,
+                                     static_cast<std::size_t>(stride), found);
+        tc = first + found;
+      }
       take(found > 0, w);
     }
     if (triangle) triangle_count[i] = static_cast<std::uint16_t>(tc);

@@ -134,7 +134,7 @@ class Simulation {
     if (params.periodic) store_.keep_images();
     check_finite(particles, 0);
     world_.upload(world, 0, static_cast<double>(params.dt), mesh_reach(params, r_max_));
-    lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
+    lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt), UsesSphereMeshRegions<Shape>::value);
     initial_count_ = store_.size();
     for (Index id : particles.id) next_id_ = std::max(next_id_, id + 1);
     if (params.pairs == PairEvaluation::once) broad_.keep_reverse_index();
@@ -167,7 +167,7 @@ class Simulation {
     if (params.periodic) store_.keep_images();
     steps_ = snap.steps;
     world_.upload(world, steps_, static_cast<double>(params.dt), mesh_reach(params, r_max_));
-    lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt));
+    lists_.configure(world, params.world_lists, params.skin, static_cast<double>(params.dt), UsesSphereMeshRegions<Shape>::value);
     if (world.dynamic() || params.energy_ledger) store_.keep_ledger(Features::thesis_power);
     initial_count_ = snap.initial_count;
     removed_count_ = snap.removed_count;

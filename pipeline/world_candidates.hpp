@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 #include "blaze/exec/primitives.hpp"
 #include "blaze/particles/particle_store.hpp"
@@ -29,21 +30,32 @@ namespace blaze {
 enum class WorldLists { automatic, on, off };
 constexpr int kWorldListsMinObjects = 8;
 
+// Does a shape's mesh contact follow mesh_surface.hpp's regions for spheres (Shape::kSphereMeshRegions)?
+// Then its triangle lists drop a flat patch's far triangles (drop_flat_neighbours).
+template <class Shape, class = void>
+struct UsesSphereMeshRegions : std::false_type {};
+template <class Shape>
+struct UsesSphereMeshRegions<Shape, std::void_t<decltype(Shape::kSphereMeshRegions)>> : std::bool_constant<Shape::kSphereMeshRegions> {};
+
 template <class Real, class Space>
 class WorldCandidates {
  public:
   static constexpr std::uint64_t kForever = ~std::uint64_t{0};
 
-  void configure(const World<Real>& world, WorldLists mode, Real skin, double dt) {
+  // sphere_bodies: the particles are spheres (their lists drop a flat patch's far triangles).
+  void configure(const World<Real>& world, WorldLists mode, Real skin, double dt, bool sphere_bodies = false) {
     const int objects = world.object_count();
     if (mode == WorldLists::on && objects > 65535)
       throw std::invalid_argument("world lists: at most 65535 world objects, got " + std::to_string(objects));
     on_ = objects > 0 && objects <= 65535 &&
           (mode == WorldLists::on || (mode == WorldLists::automatic && (objects >= kWorldListsMinObjects || !world.meshes.empty())));
-    skin_ = skin;
     triangles_ = on_ && !world.meshes.empty();
+    drop_flat_ = sphere_bodies;
     double v = 0;
     for (int k = 0; k < objects; ++k) v = std::fmax(v, world.surface_speed(k));
+    // A particle moves at most skin / 2 before the rebuild check trips; a moving object's points
+    // at most skin / 2 more before valid_until.
+    margin_ = v > 0 ? skin : Real(0.5) * skin;
     const double steps = v > 0 ? std::floor(0.5 * static_cast<double>(skin) / (v * dt)) : HUGE_VAL;
     valid_steps_ = steps < 1e18 ? static_cast<std::uint64_t>(steps) : kForever;
   }
@@ -61,9 +73,9 @@ class WorldCandidates {
         triangle_count_.ensure(p.n);
       }
       for_each(Space{}, p.n,
-               BuildWorldCandidates<Real>{p.position, p.radius, world, skin_, object_.data(), count_.data(), stride_,
+               BuildWorldCandidates<Real>{p.position, p.radius, world, margin_, object_.data(), count_.data(), stride_,
                                           triangles_ ? triangle_.data() : nullptr, triangles_ ? triangle_count_.data() : nullptr,
-                                          triangle_capacity_});
+                                          triangle_capacity_, drop_flat_});
       if (!triangles_ || triangle_capacity_ >= kTriangleCandidatesLargest) break;
       const int most = reduce_max(Space{}, p.n, ValueOf<std::uint16_t>{triangle_count_.data()}, 0);
       if (most <= triangle_capacity_) break;
@@ -157,9 +169,9 @@ class WorldCandidates {
     copy_n(triangle_count_.data(), c.size(), c.data(), Space{}, Host{});
     return c;
   }
-  bool on_ = false, triangles_ = false;
+  bool on_ = false, triangles_ = false, drop_flat_ = false;
   int triangle_capacity_ = kTriangleCandidatesFirst;
-  Real skin_ = 0;
+  Real margin_ = 0;  // m: how far a particle may move relative to any object between builds
   std::uint64_t valid_steps_ = kForever, valid_until_ = kForever, builds_ = 0;
   Index stride_ = 0;
   Buffer<std::uint16_t, Space> object_;

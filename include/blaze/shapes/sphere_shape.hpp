@@ -17,6 +17,9 @@ struct SphereShape {
   // (kernels/contact_forces.hpp, BLAZE_PAIR_EARLY_SIDE): a sphere's collision is cheap, so the
   // loads it would otherwise wait for dominate.
   static constexpr bool kEarlySide = true;
+  // Its mesh contacts are mesh_surface.hpp's regions (a triangle list may drop a flat patch's
+  // triangles the sphere cannot reach: pipeline/world_candidates.hpp).
+  static constexpr bool kSphereMeshRegions = true;
 
   template <class Real>
   struct Body {

@@ -84,6 +84,82 @@ inline std::vector<Vec3<double>> triangle_normals(const TriangleMesh& m) {
   return n;
 }
 
+// Flat patches: the triangles joined across manifold edges into one plane (normals within 1e-9
+// rad of the first one's, corners within 1e-9 of the mesh's extent of its plane). A triangle is
+// flat-interior when the whole fan of each of its corners lies in its patch and closes once around
+// the corner (every edge at it manifold, the fan's angles summing to 2 pi within 1e-9, none over
+// 170 degrees): around such a triangle the surface is the patch's plane, tiled without overlap,
+// and of the regions above only its face offers contacts, to spheres over it. Per triangle: its
+// patch when flat-interior, else -1 - its patch (a triangle list drops a sphere's far triangles of
+// a flat patch with it: mesh_wall.hpp, drop_flat_neighbours). A flat patch is assumed not to
+// overlap itself away from its corners (a sheet folded flat onto itself, which no repair here
+// detects).
+// Each triangle's plane patch (numbered from 0).
+inline std::vector<int> plane_patches(const TriangleMesh& m, const MeshTopology& topo) {
+  const std::size_t n = m.size();
+  const std::vector<Vec3<double>> normal = triangle_normals(m);
+  const double size = std::fmax(m.extent(), 1e-300);
+  std::vector<int> patch(n, -1);
+  int patches = 0;
+  std::vector<int> queue;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (patch[seed] >= 0) continue;
+    const Vec3<double> ns = normal[seed], ps = m.corner(seed, 0);
+    const auto in_plane = [&](std::size_t t) {
+      if (norm(normal[t] - ns) > 1e-9) return false;
+      for (int k = 0; k < 3; ++k)
+        if (std::fabs(dot(m.corner(t, k) - ps, ns)) > 1e-9 * size) return false;
+      return true;
+    };
+    patch[seed] = patches;
+    queue.assign(1, static_cast<int>(seed));
+    while (!queue.empty()) {
+      const int t = queue.back();
+      queue.pop_back();
+      for (int o : topo.neighbour[static_cast<std::size_t>(t)])
+        if (o >= 0 && patch[static_cast<std::size_t>(o)] < 0 && in_plane(static_cast<std::size_t>(o)))
+          patch[static_cast<std::size_t>(o)] = patches, queue.push_back(o);
+    }
+    ++patches;
+  }
+  return patch;
+}
+
+// Per vertex: 1 when its fan lies in one patch, closes (both edges of each of its triangles at it
+// manifold) with no angle over 170 degrees, and its angles make one turn (2 pi within 1e-9).
+inline std::vector<char> flat_corners(const TriangleMesh& m, const MeshTopology& topo, const std::vector<int>& patch) {
+  const double pi = 3.14159265358979323846;
+  const std::size_t nv = m.vertices.size();
+  std::vector<int> fan_patch(nv, -2);  // -2: no triangle yet; -1: not flat
+  std::vector<double> angle_sum(nv, 0);
+  for (std::size_t t = 0; t < m.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const auto v = static_cast<std::size_t>(m.triangles[t][static_cast<std::size_t>(c)]);
+      const Vec3<double> a = m.corner(t, (c + 1) % 3) - m.corner(t, c), b = m.corner(t, (c + 2) % 3) - m.corner(t, c);
+      const double angle = std::atan2(norm(cross(a, b)), dot(a, b));
+      // the fan's two edges at v: edge c (v to the next corner) and edge c + 2 (the previous to v)
+      const bool closed = topo.neighbour[t][static_cast<std::size_t>(c)] >= 0 && topo.neighbour[t][static_cast<std::size_t>((c + 2) % 3)] >= 0;
+      if (fan_patch[v] == -2) fan_patch[v] = patch[t];
+      if (fan_patch[v] != patch[t] || !closed || angle > 170.0 / 180.0 * pi) fan_patch[v] = -1;
+      angle_sum[v] += angle;
+    }
+  std::vector<char> flat(nv);
+  for (std::size_t v = 0; v < nv; ++v) flat[v] = fan_patch[v] >= 0 && std::fabs(angle_sum[v] - 2 * pi) <= 1e-9 * 2 * pi;
+  return flat;
+}
+
+inline std::vector<int> flat_patches(const TriangleMesh& m, const MeshTopology& topo) {
+  const std::vector<int> patch = plane_patches(m, topo);
+  const std::vector<char> corner = flat_corners(m, topo, patch);
+  std::vector<int> code(m.size());
+  for (std::size_t t = 0; t < m.size(); ++t) {
+    bool flat = true;
+    for (int c = 0; c < 3; ++c) flat = flat && corner[static_cast<std::size_t>(m.triangles[t][static_cast<std::size_t>(c)])];
+    code[t] = flat ? patch[t] : -1 - patch[t];
+  }
+  return code;
+}
+
 // What the contact kernels read (device-copyable pointers; the arrays are kept elsewhere;
 // std::array<int, 3> is stored as three ints, so its vectors' data() serve as the int arrays).
 template <class Real>
@@ -97,6 +173,8 @@ struct MeshSurfaceView {
   // Per triangle its three vertices, vertex[triangle[3 t + k]] copied (null: read through
   // `triangle`): the contact reads them in one step instead of two dependent ones.
   const Vec3<Real>* corner = nullptr;
+  // Per triangle its flat patch (flat_patches; null: none known, nothing dropped).
+  const int* patch = nullptr;
   BLAZE_HD Vec3<Real> corner_of(int t, int k) const { return corner ? corner[3 * t + k] : vertex[triangle[3 * t + k]]; }
 };
 

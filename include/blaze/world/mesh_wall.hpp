@@ -51,6 +51,7 @@ struct MeshArrays {
   std::vector<Vec3<Real>> normal;
   std::vector<Vec3<Real>> corner;  // per triangle its three vertices (MeshSurfaceView::corner)
   std::vector<int> triangle, neighbour, adjacency_start, adjacency, bin_start, bin_entry;
+  std::vector<int> patch;  // per triangle its flat patch (flat_patches), numbered over all meshes
   std::vector<MeshObject<Real>> objects;
   std::vector<std::size_t> bin_start_offset, bin_entry_offset;
   std::vector<long> longest_cell;  // per mesh: the most triangles one cell lists
@@ -74,6 +75,7 @@ MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) 
   if (triangles > 100000000L || vertices > 300000000L)
     throw std::invalid_argument("mesh walls: at most 1e8 triangles in all, got " + std::to_string(triangles));
   a.adjacency_start.push_back(0);
+  int patches = 0;
   for (const auto& w : meshes) {
     if (w.mesh.size() == 0) throw std::invalid_argument("mesh wall '" + w.name + "': no triangles");
     const int v0 = static_cast<int>(a.vertex.size()), t0 = static_cast<int>(a.triangle.size() / 3);
@@ -91,6 +93,13 @@ MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) 
     const int adjacency0 = static_cast<int>(a.adjacency.size());
     for (std::size_t v = 0; v + 1 < topo.adjacency_start.size(); ++v) a.adjacency_start.push_back(adjacency0 + topo.adjacency_start[v + 1]);
     for (int u : topo.adjacency) a.adjacency.push_back(v0 + u);
+    int most = -1;
+    for (int code : flat_patches(w.mesh, topo)) {
+      const int p = code >= 0 ? code : -1 - code;
+      most = std::max(most, p);
+      a.patch.push_back(code >= 0 ? patches + p : -1 - (patches + p));
+    }
+    patches += most + 1;
     const MeshBinsHost b = bin_mesh(w.mesh, reach, mesh_cell_size(w.mesh, reach));
     MeshObject<Real> o{};
     o.bins.origin = vec_cast<Real>(b.origin);
@@ -162,6 +171,68 @@ BLAZE_HD void collide_sphere_mesh(const Vec3<Real>& x, Real r, const MeshSurface
       out.contact[k].normal = pose->turn(out.contact[k].normal);
       out.contact[k].point = pose->place(out.contact[k].point);
     }
+}
+
+// Flat patches and triangle lists (kernels/world_candidates.hpp). A sphere at x (the mesh's
+// frame) that stays within `move` of x until its list is rebuilt, and lies over the face of a
+// triangle T deeper inside each of T's edges than `move` plus a rounding allowance, stays over T:
+// every other flat-interior triangle T' of T's patch (flat_patches) then offers it nothing
+// (mesh_surface.hpp: its face does not lie under x, its edges' neighbours in the plane have x on
+// their inner side, its corners' fans close around them in the plane), so T' leaves the list and
+// the contacts are bitwise those of the full list (test_triangle_lists.cpp). The allowance keeps
+// the regions' rounding margin (64 ulps of (|x - a| + L)^2 over an edge of length L, L' the
+// longest edge of T') 64 times over: depth >= move + 4096 eps (r + move + 2 L')^2 / L', with the
+// depth x's distance inside T's nearest edge line; in double it is nil, in float ~3e-3 r for
+// triangles as large as the sphere.
+// list[k * stride], k < count: the listed triangles of one mesh, ascending; kept in order, the
+// new count returned. Patches over which x lies that deep: the first kFlatCovers of the list.
+constexpr int kFlatCovers = 2;
+template <class Real>
+BLAZE_HD int patch_of(const MeshSurfaceView<Real>& s, int t) {
+  return s.patch[t] >= 0 ? s.patch[t] : -1 - s.patch[t];
+}
+// How far x's projection lies inside triangle t's nearest edge line (m; < 0: outside).
+template <class Real>
+BLAZE_HD Real depth_over_face(const MeshSurfaceView<Real>& s, int t, const Vec3<Real>& x) {
+  const Vec3<Real> n = s.normal[t];
+  Real depth = Real(0);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3<Real> a = s.corner_of(t, k), b = s.corner_of(t, k + 1 < 3 ? k + 1 : 0);
+    const Real side = mesh_detail::edge_side(x, a, b, n) / sqrt_r(norm2(b - a));  // m, inside the edge's line
+    if (k == 0 || side < depth) depth = side;
+  }
+  return depth;
+}
+template <class Real>
+BLAZE_HD int drop_flat_neighbours(const MeshSurfaceView<Real>& s, const Vec3<Real>& x, Real r, Real move, int* list,
+                                  std::size_t stride, int count) {
+  if (!s.patch) return count;
+  int cover[kFlatCovers], covers = 0;  // the triangles x lies deep over, one per patch
+  Real depth[kFlatCovers];
+  for (int k = 0; k < count && covers < kFlatCovers; ++k) {
+    const int t = list[static_cast<std::size_t>(k) * stride];
+    const Real d = depth_over_face(s, t, x);
+    if (!(d > move)) continue;
+    bool seen = false;
+    for (int c = 0; c < covers; ++c) seen = seen || patch_of(s, cover[c]) == patch_of(s, t);
+    if (!seen) cover[covers] = t, depth[covers] = d, ++covers;
+  }
+  if (covers == 0) return count;
+  int kept = 0;
+  for (int k = 0; k < count; ++k) {
+    const int t = list[static_cast<std::size_t>(k) * stride];
+    bool drop = false;
+    for (int c = 0; c < covers && !drop; ++c) {
+      // flat-interior (its code is its patch) and in the cover's patch
+      if (t == cover[c] || s.patch[t] != patch_of(s, cover[c])) continue;
+      const Vec3<Real> v0 = s.corner_of(t, 0), v1 = s.corner_of(t, 1), v2 = s.corner_of(t, 2);
+      const Real longest = sqrt_r(max_r(norm2(v1 - v0), max_r(norm2(v2 - v1), norm2(v0 - v2))));
+      const Real span = r + move + Real(2) * longest;
+      drop = depth[c] >= move + Real(4096) * epsilon_r<Real>() * span * span / longest;
+    }
+    if (!drop) list[static_cast<std::size_t>(kept++) * stride] = t;
+  }
+  return kept;
 }
 
 // Mesh m may hold a contact of any body within the bins' reach of x (the world lists' test:

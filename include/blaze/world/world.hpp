@@ -266,7 +266,7 @@ class WorldStore {
             meshes_.data(),
             nm,
             {mesh_vertex_.data(), mesh_triangle_.data(), mesh_neighbour_.data(), mesh_adjacency_start_.data(), mesh_adjacency_.data(),
-             mesh_normal_.data(), mesh_corner_.data()},
+             mesh_normal_.data(), mesh_corner_.data(), mesh_patch_.data()},
             np + nc + nm,
             poses_.data(),
             classes_.size() ? classes_.data() : nullptr};
@@ -297,6 +297,7 @@ class WorldStore {
     from_host(mesh_neighbour_, a.neighbour);
     from_host(mesh_adjacency_start_, a.adjacency_start);
     from_host(mesh_adjacency_, a.adjacency);
+    from_host(mesh_patch_, a.patch);
     from_host(mesh_bin_start_, a.bin_start);
     from_host(mesh_bin_entry_, a.bin_entry);
     for (std::size_t k = 0; k < a.objects.size(); ++k) {
@@ -314,7 +315,8 @@ class WorldStore {
   Buffer<ContactClass, Space> classes_;
   Buffer<MeshObject<Real>, Space> meshes_;
   Buffer<Vec3<Real>, Space> mesh_vertex_, mesh_normal_, mesh_corner_;
-  Buffer<int, Space> mesh_triangle_, mesh_neighbour_, mesh_adjacency_start_, mesh_adjacency_, mesh_bin_start_, mesh_bin_entry_;
+  Buffer<int, Space> mesh_triangle_, mesh_neighbour_, mesh_adjacency_start_, mesh_adjacency_, mesh_bin_start_, mesh_bin_entry_,
+      mesh_patch_;
   std::vector<long> longest_cell_;
   bool dynamic_ = false;
   double dt_ = 0;
