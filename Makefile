@@ -251,7 +251,7 @@ $(PERF_FIGURES): perf-data
 perf-data: deps
 ifeq ($(PERF_MEASURE),1)
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_bench
-	$(BUILD)/cuda/blaze_bench --cases polyhedra,packed,surfaces --tag figures --out bench/results
+	$(BUILD)/cuda/blaze_bench --cases polyhedra,packed,surfaces,mesh --tag figures --out bench/results
 	$(BUILD)/cuda/blaze_bench --cases largest --tag largest --out bench/results
 else
 	@echo "perf figures: no GPU here, plotting the committed GPU results in bench/results"

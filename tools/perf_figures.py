@@ -12,8 +12,9 @@ OUT = "plots/perf/data"
 POLY = ("cube", "octahedron", "dodecahedron")
 
 
-def rows(prefix):
-    """Newest row of each case (shape, scene, N, surfaces) measured on a device named prefix..."""
+def rows(prefix, any_pairs=False):
+    """Newest row of each case (shape, scene, N, surfaces) measured on a device named prefix...
+    (pairs from both sides only, unless any_pairs)."""
     best = {}
     for path in sorted(glob.glob("bench/results/*.csv")):
         with open(path, newline="") as f:
@@ -22,7 +23,7 @@ def rows(prefix):
                     continue
                 if "@" in r["shape"] or float(r.get("skin_over_radius") or 0.2) != 0.2 or "scene" not in r:
                     continue
-                if (r.get("pairs") or "both_sides") != "both_sides":
+                if not any_pairs and (r.get("pairs") or "both_sides") != "both_sides":
                     continue  # one mode for every N: the sweeps were measured with pairs from both sides
                 key = (r["shape"], r["scene"], int(float(r["N"])), int(r["world_surfaces"] or 0))
                 if key not in best or r["date"] > best[key]["date"]:
@@ -57,8 +58,20 @@ def main():
     base = lambda shape, scene: [r for r in pick(shape, scene) if int(r["world_surfaces"]) <= 6]  # the six-wall box
     write("fig-2.14", [(f"{s}, falling" if s != "octahedron" else "octahedra (8 faces), falling", [(n(r), ms_step(r)) for r in base(s, "free-fall")])
                        for s in ("octahedron", "cube", "dodecahedron")], "time per step (ms) vs N")
+    # issue 20: the same sweep with meshes, from one device (the one of the newest mesh row): packed
+    # cubes on a floor of 1 polygon or a mesh of 1e3-1e5 triangles, and the dense sphere bed in a box
+    # of 6 polygons or one mesh of 1e3-1e6 triangles
+    mesh_rows = [r for r in best.values() if r["scene"] in ("packed-mesh-floor", "dense-bed-mesh") and n(r) == 1000000]
+    device = max(mesh_rows, key=lambda r: r["date"])["device"] if mesh_rows else None
+    on_device = rows(device, any_pairs=True) if device else {}  # the world phase: either pair mode
+    mesh = lambda shape, scenes: [(int(r["world_surfaces"]), f(r, "ms_per_step_walls")) for r in on_device.values()
+                                  if r["shape"] == shape and r["scene"] in scenes and n(r) == 1000000]
+    tag = device.split(" (")[0] if device else ""
     write("fig-3.21", [(f"{s}, packed, N = 1e6", [(int(r["world_surfaces"]), f(r, "ms_per_step_walls")) for r in pick(s, "packed") if n(r) == 1000000])
-                       for s in ("cube", "dodecahedron")], "world contact (ms per step) vs world surfaces")
+                       for s in ("cube", "dodecahedron")] +
+          [(f"cube, packed, N = 1e6, floor a mesh of triangles ({tag})", mesh("cube", ("packed", "packed-mesh-floor"))),
+           (f"sphere dense bed, N = 1e6, box a mesh of triangles ({tag})", mesh("sphere", ("dense-bed-walls", "dense-bed-mesh")))],
+          "world contact (ms per step) vs world surfaces (polygons, or a mesh's triangles)")
     series = [(f"{s}, falling", [(n(r), f(r, "ms_per_step_walls")) for r in base(s, "free-fall")]) for s in POLY]
     series += [(f"{s}, packed", [(n(r), f(r, "ms_per_step_walls")) for r in base(s, "packed")]) for s in ("cube", "dodecahedron")]
     write("fig-3.22", series, "world contact (ms per step) vs N, by shape")
