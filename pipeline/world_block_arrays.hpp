@@ -26,7 +26,7 @@ class WorldBlockArrays {
       copy_in(starts_[k], b.start);
       copy_in(entries_[k], b.entry);
       copy_in(corners_[k], check.mesh_corners()[k]);
-      views[k] = {{b.origin, 1 / b.cell, b.nx, b.ny, b.nz, starts_[k].data(), entries_[k].data()}, corners_[k].data()};
+      views[k] = {bins_view<double>(b, starts_[k].data(), entries_[k].data()), corners_[k].data()};
     }
     copy_in(meshes_, views);
     view_.cylinder = cylinders_.data(), view_.cylinders = static_cast<int>(check.cylinders().size());

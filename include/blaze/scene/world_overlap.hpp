@@ -65,7 +65,7 @@ class WorldOverlapCheck {
     // (the views point into the vectors above: moving the check keeps them, copying would not)
     for (std::size_t k = 0; k < mesh_bins_.size(); ++k) {
       const MeshBinsHost& b = mesh_bins_[k];
-      mesh_views_.push_back({{b.origin, 1 / b.cell, b.nx, b.ny, b.nz, b.start.data(), b.entry.data()}, mesh_corners_[k].data()});
+      mesh_views_.push_back({bins_view<double>(b, b.start.data(), b.entry.data()), mesh_corners_[k].data()});
     }
   }
   WorldOverlapCheck(const WorldOverlapCheck&) = delete;

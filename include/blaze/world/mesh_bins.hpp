@@ -103,4 +103,11 @@ struct MeshBinsView {
   }
 };
 
+// The view of host bins b whose cell starts and entries lie at `start` and `entry` (b's own
+// vectors, or their copies on a device).
+template <class Real>
+MeshBinsView<Real> bins_view(const MeshBinsHost& b, const int* start, const int* entry) {
+  return {vec_cast<Real>(b.origin), static_cast<Real>(1 / b.cell), b.nx, b.ny, b.nz, start, entry};
+}
+
 }  // namespace blaze

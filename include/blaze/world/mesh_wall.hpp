@@ -102,9 +102,7 @@ MeshArrays<Real> mesh_arrays(const std::vector<MeshWall>& meshes, double reach) 
     patches += most + 1;
     const MeshBinsHost b = bin_mesh(w.mesh, reach, mesh_cell_size(w.mesh, reach));
     MeshObject<Real> o{};
-    o.bins.origin = vec_cast<Real>(b.origin);
-    o.bins.inv_cell = static_cast<Real>(1 / b.cell);
-    o.bins.nx = b.nx, o.bins.ny = b.ny, o.bins.nz = b.nz;
+    o.bins = bins_view<Real>(b, nullptr, nullptr);  // pointed at their part of the arrays by WorldStore
     o.first_triangle = t0;
     o.triangle_count = static_cast<int>(w.mesh.size());
     o.material = w.material;
