@@ -45,6 +45,17 @@ struct Terrace {
   }
 };
 
+// Two triangles per cell of a grid of (nx + 1) x (ny + 1) vertices (row by row), diagonals alternating.
+void grid_triangles(TriangleMesh& m, int nx, int ny) {
+  const auto at = [&](int i, int j) { return j * (nx + 1) + i; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int p = at(i, j), q = at(i + 1, j), r = at(i + 1, j + 1), s = at(i, j + 1);
+      if ((i + j) % 2 == 0) m.triangles.push_back({p, q, r}), m.triangles.push_back({p, r, s});
+      else m.triangles.push_back({p, q, s}), m.triangles.push_back({q, r, s});
+    }
+}
+
 Terrace terrace(double a, double h, unsigned seed) {
   const double sn = std::sin(0.15) / std::sqrt(5.0);
   Terrace t{{}, Quat<double>{std::cos(0.15), sn, 2 * sn, 0}, a, h};
@@ -59,13 +70,7 @@ Terrace terrace(double a, double h, unsigned seed) {
       const double y = -a + j * step + (fixed_y ? 0 : u(rng) * step);
       t.mesh.vertices.push_back(rotate(t.turn, Vec3<double>{x, y, t.z(x)}));
     }
-  const auto at = [&](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int p = at(i, j), q = at(i + 1, j), r = at(i + 1, j + 1), s = at(i, j + 1);
-      if ((i + j) % 2 == 0) t.mesh.triangles.push_back({p, q, r}), t.mesh.triangles.push_back({p, r, s});
-      else t.mesh.triangles.push_back({p, q, s}), t.mesh.triangles.push_back({q, r, s});
-    }
+  grid_triangles(t.mesh, n, n);
   return t;
 }
 
@@ -89,13 +94,7 @@ Terrace grooved_floor(double a, double w, double g) {
       const bool groove = xs[static_cast<std::size_t>(i)] == 0 && j >= n / 4 && j <= 3 * n / 4;
       t.mesh.vertices.push_back(rotate(t.turn, Vec3<double>{xs[static_cast<std::size_t>(i)], -a + 2 * a * j / n, groove ? -g : 0}));
     }
-  const auto at = [&](int i, int j) { return j * (nx + 1) + i; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int p = at(i, j), q = at(i + 1, j), r = at(i + 1, j + 1), s = at(i, j + 1);
-      if ((i + j) % 2 == 0) t.mesh.triangles.push_back({p, q, r}), t.mesh.triangles.push_back({p, r, s});
-      else t.mesh.triangles.push_back({p, q, s}), t.mesh.triangles.push_back({q, r, s});
-    }
+  grid_triangles(t.mesh, nx, n);
   return t;
 }
 
