@@ -21,7 +21,7 @@
 // bounding radius offers no contact (mesh_wall.hpp, polyhedron_shape.hpp), so the contacts are
 // bitwise those of the cell's triangles. For spheres the triangles of a flat patch other than the
 // one a sphere lies well over leave the list (drop_flat_neighbours, mesh_wall.hpp: they cannot
-// offer it a contact before the next rebuild). The count is kept even past the room (up to 65535), so
+// offer it a contact before the next rebuild; not while objects rotate, pipeline/world_candidates.hpp). The count is kept even past the room (up to 65535), so
 // the pipeline grows the room to fit; a particle past it tests its cell.
 #pragma once
 #include <cstdint>

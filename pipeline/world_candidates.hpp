@@ -50,9 +50,15 @@ class WorldCandidates {
     on_ = objects > 0 && objects <= 65535 &&
           (mode == WorldLists::on || (mode == WorldLists::automatic && (objects >= kWorldListsMinObjects || !world.meshes.empty())));
     triangles_ = on_ && !world.meshes.empty();
-    drop_flat_ = sphere_bodies;
     double v = 0;
-    for (int k = 0; k < objects; ++k) v = std::fmax(v, world.surface_speed(k));
+    bool turns = false;
+    for (int k = 0; k < objects; ++k)
+      v = std::fmax(v, world.surface_speed(k)), turns = turns || (world.motion(k).moves() && world.motion(k).kind == MotionKind::rotation);
+    // A flat patch's far triangles leave a sphere's list when its place in the mesh's frame moves
+    // no more than the margin before the next build: true in a still world and under translation
+    // and vibration (the frame moves as fast as its surface), not under rotation (a sphere farther
+    // from the axis than the mesh's vertices moves in the frame faster than they do).
+    drop_flat_ = sphere_bodies && !turns;
     // A particle moves at most skin / 2 before the rebuild check trips; a moving object's points
     // at most skin / 2 more before valid_until.
     margin_ = v > 0 ? skin : Real(0.5) * skin;
@@ -60,6 +66,8 @@ class WorldCandidates {
     valid_steps_ = steps < 1e18 ? static_cast<std::uint64_t>(steps) : kForever;
   }
   bool on() const { return on_; }
+  // Do the spheres' triangle lists drop a flat patch's far triangles (configure)?
+  bool drops_flat_patches() const { return triangles_ && drop_flat_; }
 
   // The lists for the particles as they are and the world as it stands at world step `step`.
   void build(const ParticleView<Real>& p, const WorldView<Real>& world, std::uint64_t step) {
