@@ -89,11 +89,10 @@ inline std::vector<Vec3<double>> triangle_normals(const TriangleMesh& m) {
 // flat-interior when the whole fan of each of its corners lies in its patch and closes once around
 // the corner (every edge at it manifold, the fan's angles summing to 2 pi within 1e-9, none over
 // 170 degrees): around such a triangle the surface is the patch's plane, tiled without overlap,
-// and of the regions above only its face offers contacts, to spheres over it. Per triangle: its
-// patch when flat-interior, else -1 - its patch (a triangle list drops a sphere's far triangles of
-// a flat patch with it: mesh_wall.hpp, drop_flat_neighbours). A flat patch is assumed not to
-// overlap itself away from its corners (a sheet folded flat onto itself, which no repair here
-// detects).
+// and of the regions above only its face offers contacts, to spheres over it (a triangle list
+// drops a sphere's far triangles of a flat patch with this: mesh_wall.hpp, drop_flat_neighbours).
+// A flat patch is assumed not to overlap itself away from its corners (a sheet folded flat onto
+// itself, which no repair here detects).
 // Each triangle's plane patch (numbered from 0).
 inline std::vector<int> plane_patches(const TriangleMesh& m, const MeshTopology& topo) {
   const std::size_t n = m.size();
@@ -148,6 +147,7 @@ inline std::vector<char> flat_corners(const TriangleMesh& m, const MeshTopology&
   return flat;
 }
 
+// Per triangle: its patch when flat-interior, else -1 - its patch.
 inline std::vector<int> flat_patches(const TriangleMesh& m, const MeshTopology& topo) {
   const std::vector<int> patch = plane_patches(m, topo);
   const std::vector<char> corner = flat_corners(m, topo, patch);

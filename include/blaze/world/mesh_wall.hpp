@@ -177,10 +177,10 @@ BLAZE_HD void collide_sphere_mesh(const Vec3<Real>& x, Real r, const MeshSurface
 // every other flat-interior triangle T' of T's patch (flat_patches) then offers it nothing
 // (mesh_surface.hpp: its face does not lie under x, its edges' neighbours in the plane have x on
 // their inner side, its corners' fans close around them in the plane), so T' leaves the list and
-// the contacts are bitwise those of the full list (test_triangle_lists.cpp). The allowance keeps
+// the contacts are bitwise those of the full list (test_flat_patches.cpp). The allowance keeps
 // the regions' rounding margin (64 ulps of (|x - a| + L)^2 over an edge of length L, L' the
 // longest edge of T') 64 times over: depth >= move + 4096 eps (r + move + 2 L')^2 / L', with the
-// depth x's distance inside T's nearest edge line; in double it is nil, in float ~3e-3 r for
+// depth x's distance inside T's nearest edge line; in double it is nil, in float ~5e-3 r for
 // triangles as large as the sphere.
 // list[k * stride], k < count: the listed triangles of one mesh, ascending; kept in order, the
 // new count returned. Patches over which x lies that deep: the first kFlatCovers of the list.
