@@ -29,6 +29,7 @@
 #include "blaze/scene/scene_identity.hpp"
 #include "pipeline/scene_law.hpp"
 #include "pipeline/feeder.hpp"
+#include "pipeline/feeder_states.hpp"
 #include "pipeline/run_log.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "pipeline/scene_params.hpp"
@@ -66,41 +67,6 @@ class Progress {
   double end_;
   clock::time_point start_, last_;
 };
-
-// The feeders' states as one byte string for the checkpoint (u64 count, then u64 length + bytes
-// each), and back.
-template <class Real>
-std::string save_feeders(const std::vector<Feeder<Real>>& feeders) {
-  std::string out;
-  auto put = [&](std::uint64_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
-  put(feeders.size());
-  for (const auto& f : feeders) {
-    const std::string b = f.save();
-    put(b.size());
-    out += b;
-  }
-  return out;
-}
-template <class Real>
-void restore_feeders(std::vector<Feeder<Real>>& feeders, const std::string& bytes, const std::string& path) {
-  std::size_t at = 0;
-  auto get = [&]() {
-    std::uint64_t v = 0;
-    if (bytes.size() - at < sizeof v) throw CheckpointError(path + ": the feeders' state is truncated");
-    std::memcpy(&v, bytes.data() + at, sizeof v);
-    at += sizeof v;
-    return v;
-  };
-  if (bytes.empty() && feeders.empty()) return;
-  if (bytes.empty() || get() != feeders.size())
-    throw CheckpointError(path + ": the checkpoint holds another number of feeders than the scene's [[feed]] tables");
-  for (auto& f : feeders) {
-    const std::uint64_t n = get();
-    if (bytes.size() - at < n) throw CheckpointError(path + ": a feeder's state is truncated");
-    f.restore(bytes.substr(at, n));
-    at += n;
-  }
-}
 
 // What the loop needs to know of what it drives (a Simulation, or over ranks a
 // DistributedSimulation of one): the local simulation's type, whether its particles are polyhedra.
