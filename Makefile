@@ -159,13 +159,13 @@ RUN_MPI_TESTS = set -e; for np in $(MPI_RANKS); do echo "MPI suite on $$np rank(
   --log_level=message --report_level=short --color_output=no $(if $(TESTS),--run_test=$(TESTS)); done
 ifeq ($(BACKEND),cuda)
 test: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests $(BUILD)/cuda/blaze
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests $(BUILD)/cuda/blaze $(BUILD)/cuda/study_hopper
 	OMP_NUM_THREADS=$(NPROC) $(call RUN_TESTS,cuda)
 else ifneq ($(SANITIZE)$(POISON),)
 # Sanitized or poisoned: the suite and the blaze program it runs; no CUDA check (nvcc does not take
 # these flags).
 test: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/blaze_tests $(BUILD)/cpu/blaze
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/blaze_tests $(BUILD)/cpu/blaze $(BUILD)/cpu/study_hopper
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $(call RUN_TESTS,cpu)
 else
 test: deps

@@ -14,7 +14,7 @@ T0=$(date +%s); left() { echo $(( ${BUDGET:-540} - ($(date +%s) - T0) )); }
 . tools/device_env.sh
 build=1; [ "${1:-}" = "--no-build" ] && { build=0; shift; }
 if [ $build = 1 ]; then
-  make -j"$(nproc)" build/cuda/blaze_tests build/cuda/blaze > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; exit 1; }
+  make -j"$(nproc)" build/cuda/blaze_tests build/cuda/blaze build/cuda/study_hopper > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; exit 1; }
   echo "build: $(( $(date +%s) - T0 )) s"
 fi
 B=build/cuda/blaze_tests

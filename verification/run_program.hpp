@@ -1,5 +1,6 @@
-// Runs the blaze program (build/<backend>/blaze, beside the test binary: make test builds both)
-// as a user would, capturing its exit status and output; reads its CSV time series.
+// Runs the blaze program (build/<backend>/blaze, beside the test binary: make test builds both),
+// or another program built there (study_hopper), as a user would, capturing its exit status and
+// output; reads its CSV time series.
 #pragma once
 #include <boost/test/unit_test.hpp>
 #include <sys/wait.h>
@@ -14,19 +15,22 @@
 
 namespace blaze::test {
 
-inline std::string blaze_binary() {
+// A program built beside the test binary (build/<backend>/NAME).
+inline std::string program_binary(const std::string& name) {
   const auto& argv = boost::unit_test::framework::master_test_suite().argv;
-  return (std::filesystem::absolute(argv[0]).parent_path() / "blaze").string();
+  return (std::filesystem::absolute(argv[0]).parent_path() / name).string();
 }
+inline std::string blaze_binary() { return program_binary("blaze"); }
 
 struct ProgramResult {
   int status = -1;  // exit status, -1 when killed by a signal
   std::string output;  // stdout and stderr
 };
 
-inline ProgramResult run_blaze(const std::string& args) {
+// Runs a command line (a program's path and its arguments) through the shell.
+inline ProgramResult run_command(const std::string& command) {
   ProgramResult r;
-  FILE* p = popen((blaze_binary() + " " + args + " 2>&1").c_str(), "r");
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
   if (!p) return r;
   char buf[512];
   while (fgets(buf, sizeof buf, p)) r.output += buf;
@@ -34,6 +38,7 @@ inline ProgramResult run_blaze(const std::string& args) {
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
 }
+inline ProgramResult run_blaze(const std::string& args) { return run_command(blaze_binary() + " " + args); }
 
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

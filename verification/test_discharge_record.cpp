@@ -6,9 +6,13 @@
 //   falling with height: funnel flow) is called funnel flow; one descending as a whole (the bottom
 //   layer first, whatever its x: mass flow) is not;
 // - a flow that stops with particles over the orifice has arched; one that stops with particles
-//   only in the dead zones at the sides has drained.
+//   only in the dead zones at the sides has drained;
+// - a record saved (a checkpoint's part) and restored goes on as the uninterrupted one, exactly.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include "blaze/particles/particle_state.hpp"
 #include "studies/hopper/discharge_record.hpp"
 
@@ -28,16 +32,22 @@ ParticleState<double> bed(int nx, int ny) {
 
 // Replays a discharge: particle k leaves at exit(k) (inf: never), sampled every `dt`; `arch_span`
 // as the study's [study] arch_time.
+// Samples k = k0, k0 + 1, ... at t = k dt while t <= t_end into `r`.
+template <class Exit>
+void sample(hopper::DischargeRecord& r, const ParticleState<double>& s, Exit exit, double dt, int k0, double t_end) {
+  for (int k = k0; k * dt <= t_end + 1e-12; ++k) {
+    const double t = k * dt;
+    ParticleState<double> left;
+    for (std::size_t j = 0; j < s.size(); ++j)
+      if (!(exit(j) <= t)) left.add_sphere(s.position[j], s.radius[j], 1000, 0, {0, 0, 0}), left.id.back() = s.id[j];
+    r.sample(t, left);
+  }
+}
 template <class Exit>
 hopper::DischargeSummary replay(const ParticleState<double>& s, Exit exit, double dt, double t_end, double arch_span = 0) {
   hopper::DischargeRecord r;
   r.open(s, 0.0, 0.025);
-  for (double t = 0; t <= t_end + 1e-12; t += dt) {
-    ParticleState<double> left;
-    for (std::size_t k = 0; k < s.size(); ++k)
-      if (!(exit(k) <= t)) left.add_sphere(s.position[k], s.radius[k], 1000, 0, {0, 0, 0}), left.id.back() = s.id[k];
-    r.sample(t, left);
-  }
+  sample(r, s, exit, dt, 0, t_end);
   return r.summary(0.025, arch_span);
 }
 
@@ -122,6 +132,47 @@ BOOST_AUTO_TEST_CASE(an_arch_is_told_from_a_drained_hopper) {
           BOOST_TEST(!replay(s, clogged, dt, t_stop + 0.3, 0.5).arched);
         }
       }
+}
+
+// A record saved mid-discharge (study_hopper's checkpoint) and restored into a fresh one, then fed
+// the rest, has the uninterrupted record's text and summary bit for bit; a damaged text is refused.
+BOOST_AUTO_TEST_CASE(a_saved_record_goes_on_as_the_uninterrupted_one) {
+  for (const int cut : {0, 7, 40})  // samples before the checkpoint
+    for (const double dt : {0.005, 0.02}) {
+      const ParticleState<double> s = bed(14, 25);
+      const auto exit = [&](std::size_t k) {  // funnel flow that arches at 0.45 s
+        const double x = std::fabs(s.position[k].x), y = s.position[k].y;
+        const double t = x < 0.025 ? 2 * y : 0.3 + 2 * y + 4 * x;
+        return t < 0.45 ? t : hopper::DischargeRecord::kNever;
+      };
+      BOOST_TEST_CONTEXT("saved after " << cut << " samples " << dt << " s apart") {
+        hopper::DischargeRecord whole, first;
+        whole.open(s, 0.0, 0.025), first.open(s, 0.0, 0.025);
+        sample(whole, s, exit, dt, 0, 1.2);
+        sample(first, s, exit, dt, 0, (cut - 0.5) * dt);
+        hopper::DischargeRecord rest;
+        std::istringstream in(first.save());
+        rest.restore(in);
+        BOOST_TEST(rest.save() == first.save());
+        sample(rest, s, exit, dt, cut, 1.2);
+        BOOST_TEST(rest.save() == whole.save());
+        const hopper::DischargeSummary a = whole.summary(0.025, 0.5), b = rest.summary(0.025, 0.5);
+        BOOST_TEST(a.arched);
+        BOOST_TEST(b.arched);
+        BOOST_TEST(a.discharged == b.discharged);
+        BOOST_TEST(a.flow_rate == b.flow_rate);  // bitwise: every number saved to 17 digits
+        BOOST_TEST(a.last_exit == b.last_exit);
+        BOOST_TEST(a.t_top_centre == b.t_top_centre);
+        // cut short, or a word where a number belongs: refused
+        const std::string text = whole.save();
+        for (const std::string& bad : {text.substr(0, text.size() / 2), std::string("discharge record 2\n"),
+                                       text.substr(0, 20) + "#" + text.substr(21)}) {  // "0#0.025 ..."
+          hopper::DischargeRecord r;
+          std::istringstream damaged(bad);
+          BOOST_CHECK_THROW(r.restore(damaged), std::runtime_error);
+        }
+      }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -20,8 +20,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <istream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -116,6 +120,46 @@ class DischargeRecord {
     return s;
   }
 
+  // The record as text for a checkpoint (every double to 17 digits, so read back bitwise), and
+  // back from `in` (a std::runtime_error when it is not what save() wrote).
+  std::string save() const {
+    std::string t = "discharge record 1\n" + text(axis_) + ' ' + text(orifice_) + ' ' + text(last_exit_) + ' ' +
+                    std::to_string(over_orifice_) + ' ' + std::to_string(entries_.size()) + ' ' + std::to_string(curve_.size()) + '\n';
+    for (const auto& e : entries_)
+      t += std::to_string(e.id) + ' ' + text(e.x0.x) + ' ' + text(e.x0.y) + ' ' + text(e.x0.z) + ' ' + text(e.mass) + ' ' + text(e.t_out) + '\n';
+    for (const auto& [time, mass] : curve_) t += text(time) + ' ' + text(mass) + '\n';
+    return t;
+  }
+  void restore(std::istream& in) {
+    std::string word;
+    const auto next = [&]() -> const std::string& {
+      if (!(in >> word)) throw std::runtime_error("the discharge record is truncated");
+      return word;
+    };
+    const auto real = [&]() {
+      char* end = nullptr;
+      const double v = std::strtod(next().c_str(), &end);
+      if (*end) throw std::runtime_error("the discharge record holds '" + word + "' where a number belongs");
+      return v;
+    };
+    const auto count = [&]() { return static_cast<std::size_t>(real()); };
+    if (next() != "discharge" || next() != "record" || next() != "1") throw std::runtime_error("no discharge record where one belongs");
+    *this = DischargeRecord{};
+    axis_ = real(), orifice_ = real(), last_exit_ = real(), over_orifice_ = count();
+    const std::size_t entries = count(), samples = count();
+    for (std::size_t k = 0; k < entries; ++k) {
+      Entry e{};
+      e.id = static_cast<std::int64_t>(real());
+      e.x0.x = real(), e.x0.y = real(), e.x0.z = real(), e.mass = real(), e.t_out = real();
+      index_[e.id] = entries_.size();
+      entries_.push_back(e);
+    }
+    for (std::size_t k = 0; k < samples; ++k) {
+      const double t = real();
+      curve_.emplace_back(t, real());
+    }
+  }
+
   // id, x0_m, y0_m, z0_m, t_out_s (NaN: never left)
   void write_csv(const std::string& path) const {
     std::ofstream out(path);
@@ -133,6 +177,11 @@ class DischargeRecord {
     Vec3<double> x0;
     double mass, t_out;
   };
+  static std::string text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+  }
   static double median(std::vector<double> v) {
     if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
     std::sort(v.begin(), v.end());

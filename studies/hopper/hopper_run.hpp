@@ -14,6 +14,14 @@
 // stored energy and penetration are the ranks' sums (Simulation::sample, reduced); the bed's
 // particles come to rank 0 at each row and frame (the discharge record and the VTU files), which
 // writes, and which decides for all whether an arch holds.
+// Checkpoints: with [output] checkpoint_interval the run writes <output directory>/checkpoint.blz
+// that often (the simulation, the feeders, the discharge record and the loop's counts after the
+// scene's identity); with a wall-clock limit (--stop-after) it writes one past the limit and stops
+// (status 3): at the next checkpoint step when there is an interval, else at the next row, frame or
+// insertion. --restart continues it bitwise: the run that wrote checkpoints at the same steps, with
+// timeseries.csv cut back to the checkpoint's row and the frames' list to its time (a snapshot
+// rebuilds the neighbour list, so a run with checkpoints differs in rounding from one without, as
+// blaze run's do; verification/test_study_hopper.cpp).
 #pragma once
 #include <algorithm>
 #include <chrono>
@@ -22,18 +30,23 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
 #include "blaze/exec/device_info.hpp"
+#include "blaze/io/checkpoint.hpp"
 #include "blaze/io/manifest.hpp"
 #include "blaze/io/vtu_writer.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "blaze/scene/scene_identity.hpp"
 #include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/sim/schedule.hpp"
 #include "pipeline/feeder.hpp"
+#include "pipeline/feeder_states.hpp"
 #include "pipeline/parallel/communicator.hpp"
 #include "pipeline/scene_law.hpp"
 #include "pipeline/scene_params.hpp"
@@ -56,6 +69,18 @@ template <class Sim>
 auto bed_state(DistributedSimulation<Sim>& sim) { return sim.gathered_state(); }
 template <class Sim>
 bool on_every_rank(DistributedSimulation<Sim>& sim, bool flag) { return sim.communicator().max(static_cast<long>(flag)) != 0; }
+#endif
+
+// A checkpoint of the run: the simulation's snapshot (over ranks: a part a rank).
+template <class Sim>
+void write_run_checkpoint(Sim& sim, const std::string& path, const std::string& text, const std::string& feeders) {
+  write_checkpoint(path, sim.snapshot(), text, feeders);
+}
+#if defined(BLAZE_MPI)
+template <class Sim>
+void write_run_checkpoint(DistributedSimulation<Sim>& sim, const std::string& path, const std::string& text, const std::string& feeders) {
+  sim.write_checkpoint(path, text, feeders);
+}
 #endif
 
 // The scene's world without the wall named "gate" (which must exist).
@@ -83,45 +108,113 @@ struct HopperKeys {
   }
 };
 
+// How a run starts and stops (study_hopper --restart PATH --stop-after SECONDS).
+struct HopperRunOptions {
+  std::string restart;      // a checkpoint of this scene's run to continue ("": from the start)
+  double stop_after = -1;   // s of wall time after which the run writes a checkpoint and stops (< 0: never)
+};
+constexpr int kHopperStopped = 3;  // study_hopper's status when it stopped at --stop-after
+
+// The loop's own counts, kept in a checkpoint after the scene's identity with the discharge record.
+struct HopperLoopState {
+  Index count0 = 0;     // what had left the domain when the gate opened
+  double mass0 = 0;     // kg, the same
+  int frame = 0;        // VTU frames written
+  long over_limit = 0;  // particle-samples past the penetration warning
+  double worst_penetration = 0;
+  std::uint64_t particle_steps = 0;
+  double wall = 0;                 // s of wall time before this process
+  std::uintmax_t csv_bytes = 0;    // timeseries.csv's length at the checkpoint
+  std::string save(const DischargeRecord& record) const {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "hopper loop 1\n%lld %.17g %d %ld %.17g %llu %.17g %llu\n", static_cast<long long>(count0), mass0, frame,
+                  over_limit, worst_penetration, static_cast<unsigned long long>(particle_steps), wall,
+                  static_cast<unsigned long long>(csv_bytes));
+    return buf + record.save();
+  }
+  void restore(const std::string& text, DischargeRecord& record, const std::string& path) {
+    std::istringstream in(text);
+    std::string a, b, c;
+    long long n0 = 0;
+    unsigned long long steps = 0, bytes = 0;
+    if (!(in >> a >> b >> c) || a != "hopper" || b != "loop" || c != "1" ||
+        !(in >> n0 >> mass0 >> frame >> over_limit >> worst_penetration >> steps >> wall >> bytes))
+      throw CheckpointError(path + ": not a checkpoint of the hopper study (or a damaged one): rerun from the start");
+    count0 = static_cast<Index>(n0), particle_steps = steps, csv_bytes = bytes;
+    try {
+      record.restore(in);
+    } catch (const std::runtime_error& e) {
+      throw CheckpointError(path + ": " + e.what());
+    }
+  }
+};
+
 // The study's loop on a Simulation, or over ranks on a DistributedSimulation (`root`: the rank
-// that writes; every rank runs the same loop, whose samples and counts are collective).
+// that writes; every rank runs the same loop, whose samples and counts are collective). `saved`:
+// the loop's state from a checkpoint the simulation and feeders continue ("": a fresh run);
+// `identity`: the scene's, written first into checkpoints.
 template <class Real, class Shape, class Run>
 int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feeder<Real>>& feeders,
-                 const std::vector<ConvexShape>& shapes, const std::vector<std::string>& overrides, bool root) {
+                 const std::vector<ConvexShape>& shapes, const std::vector<std::string>& overrides, bool root,
+                 const HopperRunOptions& opt = {}, const std::string& identity = "", const std::string& saved = "") {
   constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
   const std::string dir = s.output.directory;
   if (root) std::filesystem::create_directories(dir + "/vtu");
-  std::ofstream csv(root ? dir + "/timeseries.csv" : std::string("/dev/null"));  // (every rank runs the loop)
-  csv << "t_s,discharged_mass_kg,discharged_count,particles_in_hopper,kinetic_translational_J,kinetic_rotational_J,"
-         "potential_J,max_penetration_ratio,elastic_J,contacts_wall\n";
+  DischargeRecord record;
+  HopperLoopState loop;
+  const bool resumed = !saved.empty();
+  if (resumed) loop.restore(saved, record, opt.restart);
+  const std::string csv_path = root ? dir + "/timeseries.csv" : std::string("/dev/null");  // (every rank runs the loop)
+  if (resumed && root) {  // the rows past the checkpoint's are the stopped run's: cut them
+    std::error_code ec;
+    if (std::filesystem::file_size(csv_path, ec) < loop.csv_bytes || ec)
+      throw CheckpointError(opt.restart + ": " + csv_path + " is shorter than when the checkpoint was written (or gone)");
+    std::filesystem::resize_file(csv_path, loop.csv_bytes);
+  }
+  std::ofstream csv(csv_path, resumed ? std::ios::app : std::ios::trunc);
+  if (!resumed)
+    csv << "t_s,discharged_mass_kg,discharged_count,particles_in_hopper,kinetic_translational_J,kinetic_rotational_J,"
+           "potential_J,max_penetration_ratio,elastic_J,contacts_wall\n";
   PvdCollection pvd(dir + "/particles.pvd");  // (written by rank 0 alone)
+  if (resumed) {
+    const Index present = sim.size(), removed = sim.removed_count();  // (collective over ranks)
+    if (root) {
+      pvd.resume(sim.time() - h.gate_open + 0.5 * s.dt);
+      std::printf("restarted from %s at t = %.6g s (step %llu): %d particles, %d left the domain\n", opt.restart.c_str(),
+                  sim.time() - h.gate_open, static_cast<unsigned long long>(sim.steps()), static_cast<int>(present), static_cast<int>(removed));
+    }
+  }
   if (root) write_world_vtu(dir + "/walls.vtu", without_gate<Real>(s));
-  int frame = 0;
-  long over_limit = 0;
-  double worst_penetration = 0;
-  std::uint64_t particle_steps = 0;
+  int& frame = loop.frame;
+  long& over_limit = loop.over_limit;
+  double& worst_penetration = loop.worst_penetration;
+  std::uint64_t& particle_steps = loop.particle_steps;
   const auto every = [&](double interval) {
     return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / s.dt)));
   };
   const std::uint64_t csv_every = every(s.output.csv_interval > 0 ? s.output.csv_interval : s.end_time / 100);
   const std::uint64_t vtu_every = every(s.output.vtu_interval > 0 ? s.output.vtu_interval : s.end_time / 10);
+  const std::uint64_t checkpoint_every = s.output.checkpoint_interval > 0 ? every(s.output.checkpoint_interval) : 0;
   const auto k_open = static_cast<std::uint64_t>(std::llround(h.gate_open / s.dt));
   const auto k_end = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));
   const auto wall_start = std::chrono::steady_clock::now();
-  DischargeRecord record;
+  const auto wall_now = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
   double arched_at = -1;  // s from the opening, when an arch was seen (-1: none)
-  Index count0 = 0;  // what had left the domain when the gate opened (the discharge counts from there)
-  double mass0 = 0;
-  for (std::uint64_t k = 0;;) {
+  Index& count0 = loop.count0;  // what had left the domain when the gate opened (the discharge counts from there)
+  double& mass0 = loop.mass0;
+  const std::uint64_t k_first = resumed ? sim.steps() : 0;
+  if (k_first > k_end) throw CheckpointError(opt.restart + ": the checkpoint lies past end_time");
+  for (std::uint64_t k = k_first;;) {
     const double t = static_cast<double>(k) * s.dt - h.gate_open;
-    if (k == k_open) {
+    const bool again = resumed && k == k_first;  // the checkpoint's step: its rows, frames and insertions are done
+    if (k == k_open && !again) {
       count0 = sim.removed_count(), mass0 = sim.removed_mass();
       if (count0 > 0 && root) std::printf("WARNING: %d particles left the domain while the gate was closed\n", static_cast<int>(count0));
       for (const auto& f : feeders)
         if (f.next_insertion(k) != ~std::uint64_t{0} && root) std::printf("WARNING: feed %s still feeds after the gate opens\n", f.spec().name.c_str());
       record.open(bed_state(sim), h.axis_x, h.orifice);
     }
-    const bool end = k == k_end, csv_due = k % csv_every == 0 || end, vtu_due = k % vtu_every == 0 || end;
+    const bool end = k == k_end, csv_due = !again && (k % csv_every == 0 || end), vtu_due = !again && (k % vtu_every == 0 || end);
     if (csv_due || vtu_due) {
       const auto st = bed_state(sim);
       const Index present = sim.size();
@@ -156,10 +249,30 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
       }
     }
     if (end || arched_at >= 0) break;
-    for (auto& f : feeders)
-      if (f.inserts_at(k)) f.feed(sim);
-    // Up to the next row, frame, insertion or the opening in one stretch (the GPU batches it).
-    std::uint64_t next = next_event(k, k_end, {csv_every, vtu_every});
+    if (!again)
+      for (auto& f : feeders)
+        if (f.inserts_at(k)) f.feed(sim);
+    // A checkpoint after the step's rows, frames and insertions: at the interval, or to stop (past
+    // the wall-clock limit: at the next checkpoint step when there is an interval, so that the
+    // stopped and restarted run is bitwise the uninterrupted one; else at the next event).
+    const bool at_interval = checkpoint_every && k % checkpoint_every == 0 && k > 0;
+    const bool stop = opt.stop_after >= 0 && (at_interval || !checkpoint_every) &&
+                      on_every_rank(sim, wall_now() >= opt.stop_after);  // (over ranks: when one has reached it, all stop)
+    if (!again && (at_interval || stop)) {
+      csv.flush();
+      HopperLoopState now = loop;
+      now.wall = loop.wall + wall_now();
+      now.csv_bytes = root ? std::filesystem::file_size(csv_path) : 0;
+      write_run_checkpoint(sim, dir + "/checkpoint.blz", identity + now.save(record), save_feeders(feeders));
+      if (stop) {
+        if (root)
+          std::printf("stopped at t = %.6g s (wall-clock limit %.6g s): continue with --restart %s/checkpoint.blz\n", t, opt.stop_after,
+                      dir.c_str());
+        return kHopperStopped;
+      }
+    }
+    // Up to the next row, frame, insertion, checkpoint or the opening in one stretch (the GPU batches it).
+    std::uint64_t next = next_event(k, k_end, {csv_every, vtu_every, checkpoint_every});
     if (k < k_open) next = std::min(next, k_open);
     for (const auto& f : feeders) next = std::min(next, f.next_insertion(k + 1));
     sim.run(next - k);
@@ -168,7 +281,7 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
   }
   csv.close();
 
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double wall = loop.wall + wall_now();
   const DischargeSummary d = record.summary(h.orifice, h.arch_span);
   const double t_run = arched_at >= 0 ? arched_at : s.end_time - h.gate_open;  // s of discharge run
   const double discharged_mass = sim.removed_mass() - mass0;
@@ -228,7 +341,8 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
 // build), else one Simulation; in an MPI build (comm given) pairs from both sides in canonical order,
 // so one rank and many give the same run (pipeline/parallel/distributed_simulation.hpp).
 template <class Law, class Shape>
-int run_hopper(const Scene& s, const std::vector<std::string>& overrides, const Communicator* comm = nullptr) {
+int run_hopper(const Scene& s, const std::vector<std::string>& overrides, const Communicator* comm = nullptr,
+               const HopperRunOptions& opt = {}) {
   using Real = double;
   constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
   using Sim = Simulation<DefaultSpace, Shape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
@@ -239,23 +353,50 @@ int run_hopper(const Scene& s, const std::vector<std::string>& overrides, const 
   std::vector<ConvexShape> shapes;
   const PolyhedronTable<Real>* table = nullptr;
   if constexpr (polyhedra) shapes = build_shapes(s), shape.table = build_shape_table<Real>(s, shapes), table = &shape.table;
-  const ParticleState<Real> initial = build_particles<Real>(s, table);
-  std::printf("hopper: %zu particles (%s) placed, %zu feeds, dt = %.3g s (%.3f of the critical step %.3g s), impact overlap %.3g%% of the "
-              "radius\n", initial.size(), Shape::name, s.feeds.size(), s.dt, s.dt / s.dt_critical, s.dt_critical, 100 * s.impact_overlap);
+  // a restart takes its particles from the checkpoint
+  const ParticleState<Real> initial = opt.restart.empty() ? build_particles<Real>(s, table) : ParticleState<Real>{};
+  const std::string placed = opt.restart.empty() ? std::to_string(initial.size()) + " particles (" + Shape::name + ") placed"
+                                                  : std::string(Shape::name) + " particles from " + opt.restart;
+  std::printf("hopper: %s, %zu feeds, dt = %.3g s (%.3f of the critical step %.3g s), impact overlap %.3g%% of the radius\n", placed.c_str(),
+              s.feeds.size(), s.dt, s.dt / s.dt_critical, s.dt_critical, 100 * s.impact_overlap);
   std::printf("backend: %s, %s\n", DefaultSpace::name, device_name(DefaultSpace{}).c_str());
   std::printf("law: %s\n", scene_law_name(s).c_str());
   std::vector<Feeder<Real>> feeders;
   for (std::size_t k = 0; k < s.feeds.size(); ++k) feeders.emplace_back(s, k, table);
   // One run: the gate is removed at gate_open_time (a timed event), the contacts keep their state.
   const World<Real> world = build_world<Real>(with_wall_removed_at(s, "gate", h.gate_open));
+  // A checkpoint continues only the run that wrote it (the scene's identity, scene_identity.hpp).
+  const SceneIdentity scene_id = scene_identity(s);
+  const std::string identity = identity_text(scene_id);
+  std::string saved;  // the loop's state after the identity
+  const auto check = [&](const std::string& text) {
+    const std::string why = identity_difference(text, scene_id, s, saved);
+    if (!why.empty()) throw CheckpointError(opt.restart + ": cannot continue this scene: " + why);
+    if (saved.empty()) throw CheckpointError(opt.restart + ": not a checkpoint of the hopper study: rerun from the start");
+  };
 #if defined(BLAZE_MPI)
-  if (comm && comm->size() > 1) {
-    DistributedSimulation<Sim> run(*comm, sp, build_laws<Law>(s), world, initial, shape);
-    return drive_hopper<Real, Shape>(run, s, h, feeders, shapes, overrides, comm->rank() == 0);
+  std::error_code no_file;
+  if (comm && (comm->size() > 1 || (!opt.restart.empty() && !std::filesystem::is_regular_file(opt.restart, no_file)))) {
+    using Run = DistributedSimulation<Sim>;
+    std::unique_ptr<Run> run;
+    if (opt.restart.empty()) run = std::make_unique<Run>(*comm, sp, build_laws<Law>(s), world, initial, shape);
+    else {
+      run = std::make_unique<Run>(*comm, sp, build_laws<Law>(s), world, opt.restart, shape);
+      check(run->restart_text());
+      restore_feeders(feeders, run->restart_feeders(), opt.restart);
+    }
+    return drive_hopper<Real, Shape>(*run, s, h, feeders, shapes, overrides, comm->rank() == 0, opt, identity, saved);
   }
 #endif
-  Sim sim(sp, build_laws<Law>(s), world, initial, shape);
-  return drive_hopper<Real, Shape>(sim, s, h, feeders, shapes, overrides, true);
+  if (opt.restart.empty()) {
+    Sim sim(sp, build_laws<Law>(s), world, initial, shape);
+    return drive_hopper<Real, Shape>(sim, s, h, feeders, shapes, overrides, true, opt, identity);
+  }
+  const Checkpoint<Real> restart = read_checkpoint<Real>(opt.restart);
+  check(restart.text);
+  restore_feeders(feeders, restart.feeders, opt.restart);
+  Sim sim(sp, build_laws<Law>(s), world, restart.snapshot, shape);
+  return drive_hopper<Real, Shape>(sim, s, h, feeders, shapes, overrides, true, opt, identity, saved);
 }
 
 }  // namespace blaze::hopper

@@ -1,8 +1,13 @@
 // Hopper discharge study (default `make run`; make fig-2.15 / fig-2.16), driven by a scene file:
-//   study_hopper [SCENE.toml] [--set key=value]...      (default studies/hopper/hopper.toml)
+//   study_hopper [SCENE.toml] [--set key=value]... [--restart CHECKPOINT] [--stop-after SECONDS] [--no-plot]
+//                                                       (default studies/hopper/hopper.toml)
+//   --stop-after S: after S seconds of wall time, write <output directory>/checkpoint.blz (at the
+//   next checkpoint step when [output] checkpoint_interval is set) and stop with status 3;
+//   --restart continues from it (hopper_run.hpp). --no-plot: no plots/hopper.png.
 //   mpirun -np N build/mpi/study_hopper [SCENE.toml] ... the same over N ranks (issue 21)
 // What it runs, measures and writes: studies/hopper/hopper_run.hpp; here also plots/hopper.png.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -48,10 +53,22 @@ int main(int argc, char** argv) try {
   const Communicator* comm = study_ranks(&argc, &argv, "study_hopper");  // an MPI build: its ranks (rank 0 prints)
   std::string path = "studies/hopper/hopper.toml";
   std::vector<std::string> overrides;
+  hopper::HopperRunOptions opt;
+  bool plot_png = true;
+  const char* const usage =
+      "usage: study_hopper [SCENE.toml] [--set key=value]... [--restart CHECKPOINT] [--stop-after SECONDS] [--no-plot]";
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
     if (a == "--set" && k + 1 < argc) overrides.push_back(argv[++k]);
-    else if (a.rfind("--", 0) == 0) throw SceneError("unknown option '" + a + "'; usage: study_hopper [SCENE.toml] [--set key=value]...");
+    else if (a == "--restart" && k + 1 < argc) opt.restart = argv[++k];
+    else if (a == "--no-plot") plot_png = false;
+    else if (a == "--stop-after" && k + 1 < argc) {
+      const std::string v = argv[++k];
+      char* end = nullptr;
+      opt.stop_after = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end || !(opt.stop_after >= 0) || !(opt.stop_after < 1e9))
+        throw SceneError("--stop-after " + v + ": a wall time in seconds, from 0 to 1e9, is wanted; " + usage);
+    } else if (a.rfind("--", 0) == 0) throw SceneError("unknown option '" + a + "' (or its value missing); " + usage);
     else path = a;
   }
   const Scene s = load_scene(path, overrides);
@@ -61,10 +78,10 @@ int main(int argc, char** argv) try {
   // the scene's law, tangential and rolling keys, all of them (pipeline/scene_law.hpp)
   const int status =
       s.all_spheres()
-          ? with_scene_law<Real, true>(s, [&](auto law) { return run_hopper<typename decltype(law)::type, SphereShape>(s, overrides, comm); })
+          ? with_scene_law<Real, true>(s, [&](auto law) { return run_hopper<typename decltype(law)::type, SphereShape>(s, overrides, comm, opt); })
           : with_scene_law<Real, false>(
-                s, [&](auto law) { return run_hopper<typename decltype(law)::type, PolyhedronShape<Real>>(s, overrides, comm); });
-  if (!comm || comm->rank() == 0) {
+                s, [&](auto law) { return run_hopper<typename decltype(law)::type, PolyhedronShape<Real>>(s, overrides, comm, opt); });
+  if ((!comm || comm->rank() == 0) && status != hopper::kHopperStopped && plot_png) {
     std::filesystem::create_directories("plots");
     if (plot(s.output.directory + "/timeseries.csv", "plots/hopper.png")) std::printf("plotted plots/hopper.png\n");
   }

@@ -11,7 +11,9 @@
 //   canonical order; the record is kept in id order);
 // - beads do leave once the gate opens (the discharge is not empty);
 // - with [study] arch_time (0.025 s) shorter than a bead's fall from the orifice out of the domain, every run
-//   stops at the same row, "arched" (the decision rank 0 takes holds on every rank; no rank runs on).
+//   stops at the same row, "arched" (the decision rank 0 takes holds on every rank; no rank runs on);
+// - stopped over the ranks at a wall-clock limit (twice, the first while the feed pours) and
+//   restarted from its checkpoint parts, the run ends as the uninterrupted one.
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -44,16 +46,18 @@ std::string hopper_scene() {
   return text.str();
 }
 
-// The study on `comm` (no run on a rank outside it), writing to `dir`.
-void run_study(const Communicator* comm, const std::string& scene, const std::string& dir, std::vector<std::string> extra) {
+// The study on `comm` (no run on a rank outside it), writing to `dir`; `status`: what it must end
+// with (0, or hopper::kHopperStopped when `opt` stops it).
+void run_study(const Communicator* comm, const std::string& scene, const std::string& dir, std::vector<std::string> extra,
+               const hopper::HopperRunOptions& opt = {}, int status_wanted = 0) {
   if (!comm) return;
   std::vector<std::string> set = {"output.directory=\"" + dir + "\"", "simulation.end_time=0.35", "study.gate_open_time=0.2",
                                   "simulation.tangential=\"linear_spring\"", "fill[0].count=60", "fill[1].count=60", "fill[2].count=60",
                                   "output.vtu_interval=0.1"};
   set.insert(set.end(), extra.begin(), extra.end());
   const Scene s = load_scene(scene, set);
-  const int status = hopper::run_hopper<LinearSpringLaw<double>, SphereShape>(s, set, comm);
-  BOOST_TEST(status == 0);
+  const int status = hopper::run_hopper<LinearSpringLaw<double>, SphereShape>(s, set, comm, opt);
+  BOOST_TEST(status == status_wanted);
 }
 
 std::map<std::string, std::string> manifest(const std::string& path) {
@@ -117,6 +121,36 @@ BOOST_AUTO_TEST_CASE(the_hopper_discharge_over_ranks_is_the_one_rank_discharge) 
       BOOST_TEST(std::stol(mb["discharged_count"]) > 0);
     }
     check_at_most({kCase, "the hopper's time series over ranks against one rank (" + tag.substr(1) + "): worst column, of its largest, " + ranks,
+                   "-", "the ranks' sums in another order"},
+                  c.worst, tol::distributed_series);
+  }
+  // Stopped over the ranks at once (--stop-after 0) at the first checkpoint step (0.06 s, while the
+  // feed pours), again at the second, and continued to the end: the uninterrupted run's discharge
+  // record and time series (its exact columns; the energies as the ranks' sums are), checkpoints
+  // written one part a rank.
+  const std::vector<std::string> every = {"output.checkpoint_interval=0.06"};
+  const std::string stop = base + "/stop", checkpoint = stop + "/checkpoint.blz";
+  const std::string part0 = n > 1 ? checkpoint + ".part0of" + std::to_string(n) : checkpoint;  // (one rank: one file)
+  hopper::HopperRunOptions opt;
+  opt.stop_after = 0;
+  run_study(&comm, base + "/scene.toml", stop, every, opt, hopper::kHopperStopped);
+  comm.barrier();
+  if (comm.rank() == 0) std::filesystem::copy_file(part0, base + "/first_part0", std::filesystem::copy_options::overwrite_existing);
+  opt.restart = checkpoint;
+  run_study(&comm, base + "/scene.toml", stop, every, opt, hopper::kHopperStopped);
+  opt.stop_after = -1;
+  run_study(&comm, base + "/scene.toml", stop, every, opt);
+  comm.barrier();
+  if (comm.rank() == 0) {
+    BOOST_TEST(text_of(base + "/first_part0") != text_of(part0));  // two stops, two checkpoints
+    std::vector<std::string> ha, hb;
+    const auto ra = csv_rows(stop + "/timeseries.csv", ha), rb = csv_rows(base + "/flow_many/timeseries.csv", hb);
+    const SeriesComparison c = compare_series(ha, ra, hb, rb, {"t_s", "discharged_mass_kg", "discharged_count", "particles_in_hopper",
+                                                              "contacts_wall"});
+    BOOST_TEST(c.same_shape);
+    BOOST_TEST(c.exact_wrong == 0);
+    BOOST_TEST(text_of(stop + "/discharge.csv") == text_of(base + "/flow_many/discharge.csv"));
+    check_at_most({kCase, "the hopper stopped twice and restarted over " + ranks + " against its uninterrupted run: worst column, of its largest",
                    "-", "the ranks' sums in another order"},
                   c.worst, tol::distributed_series);
   }
