@@ -12,6 +12,11 @@
 #   CORN_RUN=0 only summarises the runs already in DIR.
 #   CORN_JOBS=N runs N cases at once (default 1; on one GPU a few small runs share it well, more
 #   so under MPS: `nvidia-cuda-mps-control -d`).
+#   CORN_STOP_AFTER=S stops each run after S seconds of wall time at its next checkpoint (every
+#   CORN_CHECKPOINT s of simulated time, default 0.1; study_hopper --stop-after) and leaves
+#   DIR/W<mm>_s<seed>.stopped; the same command again continues the stopped runs from their
+#   checkpoints (bitwise the run that never stopped), skips the finished ones, and summarises once
+#   none is left stopped (for sessions shorter than the study).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$1 dir=${2:-data/hopper/corn}
@@ -40,12 +45,23 @@ for w in $orifices; do
     [ "${CORN_RUN:-1}" = 1 ] || continue
     mkdir -p "$case_dir"
     rm -f "$case_dir.failed"
+    stop=() restart=() fresh=1
+    if [ -n "${CORN_STOP_AFTER:-}" ]; then
+      stop=(--stop-after "$CORN_STOP_AFTER" --set "output.checkpoint_interval=${CORN_CHECKPOINT:-0.1}")
+      if [ -e "$case_dir.stopped" ]; then restart=(--restart "$case_dir/checkpoint.blz"); fresh=0
+      elif [ -e "$case_dir/manifest.txt" ]; then echo "corn: W = $w mm seed $seed: done before"; continue; fi
+    fi
     while [ "$(jobs -rp | wc -l)" -ge "${CORN_JOBS:-1}" ]; do wait -n || true; done
     (
-      "$bin" studies/hopper/corn.toml --set "mesh[0].file=\"$stl\"" --set "study.orifice_half_width=$half" \
+      [ "$fresh" = 0 ] || : > "$case_dir.log"
+      status=0
+      "$bin" studies/hopper/corn.toml --no-plot --set "mesh[0].file=\"$stl\"" --set "study.orifice_half_width=$half" \
         --set "wall[0].vertices=[[-$gate, -0.0005, $gate], [$gate, -0.0005, $gate], [$gate, -0.0005, -$gate], [-$gate, -0.0005, -$gate]]" \
-        --set "simulation.seed=$seed" --set "output.directory=\"$case_dir\"" "${sets[@]}" > "$case_dir.log" 2>&1 \
-        || { echo "corn: W = $w mm seed $seed failed (see $case_dir.log)"; tail -5 "$case_dir.log"; touch "$case_dir.failed"; exit 1; }
+        --set "simulation.seed=$seed" --set "output.directory=\"$case_dir\"" "${sets[@]}" "${stop[@]}" "${restart[@]}" >> "$case_dir.log" 2>&1 \
+        || status=$?
+      rm -f "$case_dir.stopped"
+      if [ "$status" = 3 ]; then touch "$case_dir.stopped"; echo "corn: W = $w mm seed $seed: $(grep -a "^stopped at" "$case_dir.log" | tail -1 | cut -d: -f1)"; exit 0; fi
+      [ "$status" = 0 ] || { echo "corn: W = $w mm seed $seed failed (see $case_dir.log)"; tail -5 "$case_dir.log"; touch "$case_dir.failed"; exit 1; }
       echo "corn: W = $w mm seed $seed: $(grep -a "^arched\|^no arch" "$case_dir.log" | tail -1)"
     ) &
   done
@@ -53,6 +69,9 @@ done
 wait || true
 for c in $cases; do
   [ -e "$c.failed" ] && { rm -f "$c.failed"; echo "corn: a run failed: not summarised"; exit 1; }
+done
+for c in $cases; do
+  [ -e "$c.stopped" ] && { echo "corn: runs stopped at CORN_STOP_AFTER: run the same command again to continue them"; exit 3; }
 done
 python3 - "$length" "$dir/summary.csv" studies/hopper/corn.md $cases <<'PY'
 import os, re, statistics, sys
