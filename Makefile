@@ -313,7 +313,8 @@ fig-beverloo: deps
 # make fig-2.17: 13 824 corn kernels poured into a 60-degree hopper (an STL per orifice,
 # studies/hopper/make_hopper_stl.py) and discharged through orifices of 2 to 4 kernel lengths, three
 # seeds each: the runs that arch -> data/hopper/corn/, studies/hopper/corn.md, plots/fig-2.17.png
-# (tools/corn_arching.sh; a GPU target).
+# (tools/corn_arching.sh; a GPU target; CORN_STOP_AFTER=seconds stops each run at a checkpoint, and
+# the same command continues them).
 .PHONY: fig-2.17
 fig-2.17: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_hopper
