@@ -649,7 +649,7 @@ class Simulation {
     while (steps > 0) {
       const std::uint64_t k = std::min(kMaxBatch, steps);
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
-      fused_steps(Space{}, store_.size(), k, step_phases(params_.dt), flags_.data());
+      fused_steps(Space{}, store_.size(), k, step_phases(params_.dt), flags_.data(), one_block_particles<Shape>());
       const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
       const auto j = static_cast<std::uint64_t>(std::find_if(flags.begin(), flags.end(), [](int f) { return f != 0; }) - flags.begin());
       steps_ += j;

@@ -35,8 +35,23 @@
 
 namespace blaze {
 
-// Up to this many particles the one-block path is used (16 particles per thread at most).
+// Up to this many particles the one-block path is used (16 particles per thread at most), unless
+// the caller gives fused_steps a lower limit (a shape whose particles each cost a long chain of
+// work: Simulation passes the shape's kOneBlockParticles).
 constexpr Index kFusedMaxParticles = 4096;
+// A shape's kOneBlockParticles where it declares one, else kFusedMaxParticles.
+template <class Shape, class = void>
+struct OneBlockParticles {
+  static constexpr Index value = kFusedMaxParticles;
+};
+template <class Shape>
+struct OneBlockParticles<Shape, std::void_t<decltype(Shape::kOneBlockParticles)>> {
+  static constexpr Index value = Shape::kOneBlockParticles;
+};
+template <class Shape>
+constexpr Index one_block_particles() {
+  return OneBlockParticles<Shape>::value;
+}
 
 template <class F>
 struct KernelPhase {
@@ -146,7 +161,7 @@ void stepwise_steps(Space, Index n, std::uint64_t k, const Phases<P...>& phases,
 }
 
 template <class... P>
-void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, Index /*one_block_max*/ = kFusedMaxParticles) {
   stepwise_steps(Host{}, n, k, phases, flags);
 }
 
@@ -360,12 +375,13 @@ void graph_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
 
 // The list is read from device memory: with a polyhedron shape table in several phases it
 // exceeds the kernel parameter space.
+// one_block_max: the most particles the one-block kernel takes (at most kFusedMaxParticles).
 template <class... P>
-void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, Index one_block_max = kFusedMaxParticles) {
   using List = Phases<P...>;
   static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
   if (n <= 0 || k == 0) return;
-  if (n > kFusedMaxParticles) {
+  if (n > std::min(one_block_max, kFusedMaxParticles)) {
     // BLAZE_STEPWISE=1 (the lever's baseline, bench/results/levers/graph-steps.md): a host round
     // trip per step, each step's phases in turn and the check read back.
     static const bool stepwise = std::getenv("BLAZE_STEPWISE") != nullptr;

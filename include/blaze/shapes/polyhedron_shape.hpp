@@ -171,6 +171,11 @@ struct PolyhedronShape {
   // planar wall, collide_mesh): cos(1 degree).
   static constexpr double kFlushFace = 0.99984769515639127;
   static constexpr int kFlushPoints = 4;  // such edges' ends one plane's patch takes (two edges)
+  // The most particles a step takes in one block on the GPU (phases.hpp's one-block path: 256
+  // threads on one SM): one a thread. A polyhedron's contacts are a long serial chain (SAT over
+  // faces and edge pairs): a thread taking ten of them made a step of 2 679 corn kernels cost 6 ms
+  // on an H100 (make fig-2.17's pour), where the whole GPU takes them at once.
+  static constexpr int kOneBlockParticles = 256;
   // Contact kernels: at least this many blocks of 256 per SM (launch.hpp): 4 caps them at 64
   // registers. BLAZE_POLYHEDRON_MIN_BLOCKS sets it for lever measurements (bench/results/levers/).
 #ifdef BLAZE_POLYHEDRON_MIN_BLOCKS
