@@ -112,6 +112,7 @@ struct HopperKeys {
 struct HopperRunOptions {
   std::string restart;      // a checkpoint of this scene's run to continue ("": from the start)
   double stop_after = -1;   // s of wall time after which the run writes a checkpoint and stops (< 0: never)
+  bool phases = false;      // time each phase of the step (--phases: a synchronisation per phase)
 };
 constexpr int kHopperStopped = 3;  // study_hopper's status when it stopped at --stop-after
 
@@ -204,6 +205,24 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
   double& mass0 = loop.mass0;
   const std::uint64_t k_first = resumed ? sim.steps() : 0;
   if (k_first > k_end) throw CheckpointError(opt.restart + ": the checkpoint lies past end_time");
+  // This process's pace: steps, neighbour-list builds, feeding and (--phases) each phase's share.
+  sim.timer().enabled = opt.phases;
+  const std::uint64_t builds_before = sim.neighbour_builds();
+  const auto report_pace = [&](std::uint64_t k) {
+    const double w = wall_now();
+    const std::uint64_t taken = k - k_first, builds = sim.neighbour_builds() - builds_before;
+    double feeding = 0;
+    for (const auto& f : feeders) feeding += f.place_seconds() + f.insert_seconds();
+    if (!root || taken == 0) return;
+    std::printf("pace: %llu steps in %.1f s (%.4g steps/s), a neighbour-list build every %.3g steps, feeding %.3g s\n",
+                static_cast<unsigned long long>(taken), w, static_cast<double>(taken) / w,
+                builds ? static_cast<double>(taken) / static_cast<double>(builds) : 0.0, feeding);
+    if (opt.phases) {
+      std::printf("  phases, ms per step:");
+      for (const auto& [phase, seconds] : sim.timer().seconds()) std::printf(" %s %.4g", phase.c_str(), 1e3 * seconds / static_cast<double>(taken));
+      std::printf("\n");
+    }
+  };
   for (std::uint64_t k = k_first;;) {
     const double t = static_cast<double>(k) * s.dt - h.gate_open;
     const bool again = resumed && k == k_first;  // the checkpoint's step: its rows, frames and insertions are done
@@ -265,6 +284,7 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
       now.csv_bytes = root ? std::filesystem::file_size(csv_path) : 0;
       write_run_checkpoint(sim, dir + "/checkpoint.blz", identity + now.save(record), save_feeders(feeders));
       if (stop) {
+        report_pace(k);
         if (root)
           std::printf("stopped at t = %.6g s (wall-clock limit %.6g s): continue with --restart %s/checkpoint.blz\n", t, opt.stop_after,
                       dir.c_str());
@@ -280,6 +300,7 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
     k = next;
   }
   csv.close();
+  report_pace(sim.steps());
 
   const double wall = loop.wall + wall_now();
   const DischargeSummary d = record.summary(h.orifice, h.arch_span);

@@ -1,9 +1,10 @@
 // Hopper discharge study (default `make run`; make fig-2.15 / fig-2.16), driven by a scene file:
-//   study_hopper [SCENE.toml] [--set key=value]... [--restart CHECKPOINT] [--stop-after SECONDS] [--no-plot]
+//   study_hopper [SCENE.toml] [--set key=value]... [--restart CHECKPOINT] [--stop-after SECONDS] [--no-plot] [--phases]
 //                                                       (default studies/hopper/hopper.toml)
 //   --stop-after S: after S seconds of wall time, write <output directory>/checkpoint.blz (at the
 //   next checkpoint step when [output] checkpoint_interval is set) and stop with status 3;
-//   --restart continues from it (hopper_run.hpp). --no-plot: no plots/hopper.png.
+//   --restart continues from it (hopper_run.hpp). --no-plot: no plots/hopper.png. --phases: each
+//   phase's time per step at the end (one synchronisation per phase: slower).
 //   mpirun -np N build/mpi/study_hopper [SCENE.toml] ... the same over N ranks (issue 21)
 // What it runs, measures and writes: studies/hopper/hopper_run.hpp; here also plots/hopper.png.
 #include <cstdio>
@@ -56,12 +57,13 @@ int main(int argc, char** argv) try {
   hopper::HopperRunOptions opt;
   bool plot_png = true;
   const char* const usage =
-      "usage: study_hopper [SCENE.toml] [--set key=value]... [--restart CHECKPOINT] [--stop-after SECONDS] [--no-plot]";
+      "usage: study_hopper [SCENE.toml] [--set key=value]... [--restart CHECKPOINT] [--stop-after SECONDS] [--no-plot] [--phases]";
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
     if (a == "--set" && k + 1 < argc) overrides.push_back(argv[++k]);
     else if (a == "--restart" && k + 1 < argc) opt.restart = argv[++k];
     else if (a == "--no-plot") plot_png = false;
+    else if (a == "--phases") opt.phases = true;
     else if (a == "--stop-after" && k + 1 < argc) {
       const std::string v = argv[++k];
       char* end = nullptr;
