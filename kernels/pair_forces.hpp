@@ -52,38 +52,64 @@ struct PairForces {
   PairHistoryView<Real, Law::State::kReals> history;  // the lower index's copy (contact_history.hpp)
   Real dt;
   PeriodicImages<Real> images;  // periodic axes: j's image beside i (grid/periodic_images.hpp)
+  // 0: a thread a particle, walking its list; n (the particles): a thread a list entry, t = k n + i
+  // (items(n) of them, phases.hpp), each evaluating at most one pair. A polyhedron pair is a long
+  // serial chain (SAT): a few thousand particles give the GPU too few threads a particle each
+  // (make fig-2.17's pour), an entry each gives it capacity times more. The same arithmetic for
+  // every pair: bitwise the same slots. Not with Features::thesis_power (a particle's sum).
+  Index entry_rows = 0;
 
-  BLAZE_HD void operator()(Index i) const {
+  BLAZE_HD Index items(Index n) const { return entry_rows > 0 ? n * list.capacity : n; }
+
+  BLAZE_HD void operator()(Index t) const {
+    if constexpr (!Features::thesis_power)
+      if (entry_rows > 0) {
+        const Index i = t % entry_rows, k = t / entry_rows;
+        if (k >= min_r(list.count[i], list.capacity) || list.at(k, i) < i) return;  // j's entry evaluates it
+        const auto a = pair_side<Features>(shape, p, i);
+        Real unused = 0;
+        evaluate(a, i, k, unused);
+        return;
+      }
+    const Index i = t;
     const auto a = pair_side<Features>(shape, p, i);
     const Index count = min_r(list.count[i], list.capacity);
     Real thesis = 0;  // J (Features::thesis_power): the pairs evaluated here, booked whole to i
     for (Index k = 0; k < count; ++k) {
-      const Index j = list.at(k, i);
-      if (j < i) continue;  // j's kernel thread evaluates this pair
-      const std::size_t s = list.offset(k, i);
-      constexpr bool kEarly = Law::kHistory && BLAZE_HISTORY_EARLY_LOAD;  // contact_history.hpp
-      auto state = kEarly ? history.load(s) : typename Law::State{};
-      auto bj = shape.body(p, j);
-      if (images.on()) bj.x = bj.x + images.shift(s);
-      const auto g = shape.collide(a.body, bj);
-      if (!g.touching) {
-        slots.state[s] = 0;
-        if constexpr (kEarly) history.forget(s, state);
-        else if constexpr (Law::kHistory) history.forget(s);
-        continue;
-      }
-      slots.state[s] = g.kind == ContactKind::edge_edge ? 2 : 1;
-      if constexpr (Features::monitor) slots.overlap[s] = g.overlap;
-      if constexpr (Law::kHistory && !kEarly) state = history.load(s);
-      const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
-      if constexpr (Law::kHistory) history.store(s, state);
-      slots.set(slots.force, s, c.force);
-      if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>> && Features::rotation) slots.set(slots.moment, s, c.moment);
-      if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
-      if constexpr (Features::thesis_power) thesis += pair_thesis_dissipation<Kinematics, Features>(laws, p, a, j, bj, g, c, dt);
+      if (list.at(k, i) < i) continue;  // j's kernel thread evaluates this pair
+      evaluate(a, i, k, thesis);
     }
     if constexpr (Features::thesis_power)
       if (p.ledger.thesis_estimate) p.ledger.thesis_estimate[i] += thesis;
+  }
+
+ private:
+  // Entry k of particle i (its neighbour above i): collide, evaluate the law, fill the slot.
+  template <class Side>
+  BLAZE_HD void evaluate(const Side& a, Index i, Index k, Real& thesis) const {
+    const Index j = list.at(k, i);
+    const std::size_t s = list.offset(k, i);
+    constexpr bool kEarly = Law::kHistory && BLAZE_HISTORY_EARLY_LOAD;  // contact_history.hpp
+    auto state = kEarly ? history.load(s) : typename Law::State{};
+    auto bj = shape.body(p, j);
+    if (images.on()) bj.x = bj.x + images.shift(s);
+    const auto g = shape.collide(a.body, bj);
+    if (!g.touching) {
+      slots.state[s] = 0;
+      if constexpr (kEarly) history.forget(s, state);
+      else if constexpr (Law::kHistory) history.forget(s);
+      return;
+    }
+    slots.state[s] = g.kind == ContactKind::edge_edge ? 2 : 1;
+    if constexpr (Features::monitor) slots.overlap[s] = g.overlap;
+    if constexpr (Law::kHistory && !kEarly) state = history.load(s);
+    const ContactForce<Real> c = pair_force<Kinematics, Features>(laws, p, a, j, bj, g, state, dt);
+    if constexpr (Law::kHistory) history.store(s, state);
+    slots.set(slots.force, s, c.force);
+    if constexpr (has_moment_v<Law, std::decay_t<decltype(g)>> && Features::rotation) slots.set(slots.moment, s, c.moment);
+    if constexpr (Features::rotation) slots.set(slots.point, s, g.point);
+    if constexpr (Features::thesis_power) thesis += pair_thesis_dissipation<Kinematics, Features>(laws, p, a, j, bj, g, c, dt);
+    else (void)thesis;
   }
 };
 

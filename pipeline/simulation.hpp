@@ -39,6 +39,13 @@ namespace blaze {
 //               53 B (double) more per list entry. A scene's choice: it pays for polyhedra,
 //               whose pairs are dear, not for spheres (bench/README.md).
 enum class PairEvaluation { both_sides, once };
+// With pairs once, the threads of the pair phase (the slots are bitwise the same either way):
+//   particle:  a thread a particle, walking its list;
+//   entry:     a thread a list entry (kernels/pair_forces.hpp PairForces::entry_rows): capacity
+//              times the threads, for systems too small to fill the GPU a particle a thread;
+//   automatic: entries on the GPU below kEntryThreadsBelow particles, particles otherwise.
+enum class PairThreads { automatic, particle, entry };
+constexpr Index kEntryThreadsBelow = Index(1) << 17;  // ~half the threads an H100/H200 holds at once
 
 template <class Real>
 struct SimulationParams {
@@ -49,6 +56,7 @@ struct SimulationParams {
   Real skin;            // m, neighbour-list margin; 0 rebuilds whenever anything moves
   Real drag = 0;        // kg/m, quadratic air drag F = -drag |v| v on every particle (0: none)
   PairEvaluation pairs = PairEvaluation::both_sides;  // see PairEvaluation
+  PairThreads pair_threads = PairThreads::automatic;  // see PairThreads
   // Keep the energy accounts (blaze/particles/energy_ledger.hpp: the drive's work and the
   // dissipation by contact class) even in a still world; a world that moves keeps them anyway.
   bool energy_ledger = false;
@@ -586,12 +594,20 @@ class Simulation {
         check_phase("integrate", then_check(integrate<Stage::pre_force>(),
                                             broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until()))),
         kernel_phase("contacts", contact_forces(history_dt), !once),
-        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt, broad_.images()}, once),
+        kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt, broad_.images(),
+                                                                             entry_threads() ? store_.size() : 0}, once),
         kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats(), broad_.images()}, once),
         kernel_phase("walls", world_forces(history_dt), !world_.empty()),
         kernel_phase("integrate", integrate<Stage::post_force>()));
     static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");
     return phases;
+  }
+
+  // Whether the pair phase runs a thread a list entry (PairThreads).
+  bool entry_threads() const {
+    if constexpr (Features::thesis_power) return false;
+    if (params_.pair_threads != PairThreads::automatic) return params_.pair_threads == PairThreads::entry;
+    return !std::is_same_v<Space, Host> && store_.size() < kEntryThreadsBelow;
   }
 
   // The step's phases from `from` on; a check that stops it is acted on (on_check) and the phases

@@ -3,6 +3,8 @@
 // re-sorting) and a falling bed of cubes, with the contact counts by kind and the penetration
 // monitor that `blaze run` keeps:
 // - one force evaluation from the same state agrees to rounding on every backend;
+// - pairs once with a thread a list entry (the GPU's small systems) and with a thread a particle
+//   evaluate the same forces, and on the host the same trajectory bitwise (with contact history too);
 // - on the host the whole trajectory is bitwise the same: the second side's force is the exact
 //   negation of the first's, its torque the same expression, and both add in list order. On the
 //   GPU the compiler contracts a*b + c into FMAs per kernel, and the pair and gather kernels
@@ -31,9 +33,11 @@ struct Outcome {
 };
 
 template <class Sim, class Scene, class Laws, class Shape>
-Outcome run(const Scene& scene, const Laws& laws, const Shape& shape, PairEvaluation pairs, int steps) {
+Outcome run(const Scene& scene, const Laws& laws, const Shape& shape, PairEvaluation pairs, int steps,
+            PairThreads threads = PairThreads::automatic) {
   auto params = scene.params;
   params.pairs = pairs;
+  params.pair_threads = threads;
   Sim sim(params, laws, scene.world, scene.particles, shape);
   Outcome out;
   for (int s = 0; s < steps; ++s) {
@@ -127,6 +131,42 @@ void check_once_equals_both_sides(const std::string& name, const Scene& scene, c
   BOOST_TEST(both.builds == once.builds);
 }
 
+// Pairs once with a thread a list entry against a thread a particle (PairThreads; the GPU's
+// choice below kEntryThreadsBelow particles): one evaluation from a packed state gives the same
+// forces and torques (exactly on the host; to rounding on the GPU, whose two kernels may contract
+// FMAs differently), and on the host the whole trajectory is bitwise the same.
+template <class Sim, class Scene, class Laws, class Shape>
+void check_entry_threads(const std::string& name, const Scene& packed, const Scene& falling, const Laws& laws, const Shape& shape,
+                         double tolerance, int steps) {
+  auto params = packed.params;
+  params.pairs = PairEvaluation::once;
+  const auto snap = Sim(params, laws, packed.world, packed.particles, shape).snapshot();
+  const auto evaluate = [&](PairThreads threads) {
+    params.pair_threads = threads;
+    Sim sim(params, laws, packed.world, snap, shape);
+    sim.step();
+    return sim.snapshot().store;
+  };
+  const auto particle = evaluate(PairThreads::particle), entry = evaluate(PairThreads::entry);
+  const auto [df, sf] = field_difference(particle, entry, 9);
+  const auto [dt, st] = field_difference(particle, entry, 12);
+  BOOST_TEST_MESSAGE(name << ", a thread a list entry against a thread a particle, one evaluation: largest force difference " << df
+                          << " N of " << sf << " N, torque " << dt << " of " << st << " N m");
+  BOOST_TEST(sf > 0);
+  BOOST_TEST(df <= (std::is_same_v<DefaultSpace, Host> ? 0.0 : tolerance) * sf);
+  BOOST_TEST(dt <= (std::is_same_v<DefaultSpace, Host> ? 0.0 : tolerance) * st);
+  if constexpr (std::is_same_v<DefaultSpace, Host>) {
+    const Outcome a = run<Sim>(falling, laws, shape, PairEvaluation::once, steps, PairThreads::particle);
+    const Outcome b = run<Sim>(falling, laws, shape, PairEvaluation::once, steps, PairThreads::entry);
+    BOOST_TEST_REQUIRE(a.state.size() == b.state.size());
+    BOOST_TEST(a.builds > 2u);
+    BOOST_TEST(differing_particles(a.state, b.state) == 0);
+    BOOST_TEST(a.contacts.first == b.contacts.first);
+    BOOST_TEST(a.contacts.second == b.contacts.second);
+    BOOST_TEST(a.worst_penetration == b.worst_penetration);
+  }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(pair_evaluation)
@@ -152,6 +192,20 @@ BOOST_AUTO_TEST_CASE(cubes_once_equal_both_sides) {
   check_one_evaluation<Sim>("cubes, float, packed lattice", packed, one_law(bed.law), bed.shape, tol::pair_evaluation_float);
   if constexpr (std::is_same_v<DefaultSpace, Host>)
     check_once_equals_both_sides<Sim>("cubes, float", bed.scene, one_law(bed.law), bed.shape, 3000);
+  check_entry_threads<Sim>("cubes, float", packed, bed.scene, one_law(bed.law), bed.shape, tol::pair_evaluation_float, 1500);
+}
+
+// The entry threads with contact history (the tangential spring read and written by the pair's
+// entry) and spheres: the same as a thread a particle.
+BOOST_AUTO_TEST_CASE(entry_threads_with_history_equal_particle_threads) {
+  using Law = HertzMindlinLaw<double>;
+  const double r = 2e-3, m = 2500 * 4.0 / 3.0 * kPi * r * r * r, k = 1e5;
+  const double dt = kPi * std::sqrt(0.5 * m / k) / 25;
+  const auto falling = gravity_packing<double>(800, r, 2024, dt);
+  const auto packed = gravity_packing<double>(1000, r, 42, dt, {Lattice::fcc, 1.98, 0.005, 0.01, true});
+  const Law law{Hertz<double>::from_restitution(5e7, 0.5), TangentialSpring<double>::mindlin(0.4, 5e7 / 1.5 / 2.5, 0.5)};  // (test_canonical_order.cpp)
+  using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, MonitoredFeatures>;
+  check_entry_threads<Sim>("spheres, Hertz-Mindlin, double", packed, falling, one_law(law), SphereShape{}, tol::pair_evaluation_double, 1500);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

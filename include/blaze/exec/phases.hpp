@@ -1,5 +1,7 @@
 // A time step as a list of named phases over particles [0, n), run in order:
-//   kernel_phase(name, f[, enabled])  f(i) for every i (a disabled phase is skipped)
+//   kernel_phase(name, f[, enabled])  f(i) for every i (a disabled phase is skipped); a functor
+//                                     with items(n) runs over that many items instead (a thread
+//                                     a neighbour-list entry, kernels/pair_forces.hpp)
 //   check_phase(name, f)              code = max_i f(i); nonzero stops the step after this phase,
 //                                     and the caller (the host) acts on it, then resumes the
 //                                     phases after it (a rebuild; later, a feed or a migration)
@@ -51,6 +53,18 @@ struct OneBlockParticles<Shape, std::void_t<decltype(Shape::kOneBlockParticles)>
 template <class Shape>
 constexpr Index one_block_particles() {
   return OneBlockParticles<Shape>::value;
+}
+
+// The items a kernel phase runs over for n particles: f.items(n) where the functor declares it (a
+// thread a list entry: kernels/pair_forces.hpp), else n. Checks run over the particles.
+template <class F, class = void>
+struct HasItems : std::false_type {};
+template <class F>
+struct HasItems<F, std::void_t<decltype(std::declval<const F&>().items(Index{}))>> : std::true_type {};
+template <class F>
+BLAZE_HD Index phase_items(const F& f, Index n) {
+  if constexpr (HasItems<F>::value) return f.items(n);
+  else return n;
 }
 
 template <class F>
@@ -140,7 +154,7 @@ PhaseStop run_phases(Space space, Index n, const Phases<H, T...>& p, int from, i
       timer.time(p.head.name, [&] { code = reduce_max(space, n, p.head.f, 0); });
       if (code != 0) return {index, code};
     } else if (p.head.enabled) {
-      timer.time(p.head.name, [&] { for_each(space, n, p.head.f); });
+      timer.time(p.head.name, [&] { for_each(space, phase_items(p.head.f, n), p.head.f); });
     }
   }
   return run_phases(space, n, p.tail, from, to, timer, index + 1);
@@ -237,7 +251,8 @@ __device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* f
     }
   } else if (p.head.enabled) {
     BLAZE_FUSED_CLOCK_START;
-    for (Index i = threadIdx.x; i < n; i += blockDim.x) p.head.f(i);
+    const Index items = phase_items(p.head.f, n);
+    for (Index i = threadIdx.x; i < items; i += blockDim.x) p.head.f(i);
     BLAZE_FUSED_CLOCK_WORK(index);
     __syncthreads();
     BLAZE_FUSED_CLOCK_PHASE(index);
@@ -337,7 +352,7 @@ void graph_phases(const Phases<H, T...>& p, Index n, int index, GraphChain& chai
     chain.kernel(graph_check_kernel<decltype(p.head.f)>, blocks, kBlockSize, n, p.head.f, state, state + 1);
     chain.kernel(graph_settle_kernel<0>, 1, 1, state, flags, index);
   } else if (p.head.enabled) {
-    chain.for_each(n, UnlessStopped<decltype(p.head.f)>{p.head.f, state});
+    chain.for_each(phase_items(p.head.f, n), UnlessStopped<decltype(p.head.f)>{p.head.f, state});
   }
   graph_phases(p.tail, n, index + 1, chain, state, flags);
 }
