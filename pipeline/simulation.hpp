@@ -56,7 +56,6 @@ struct SimulationParams {
   Real skin;            // m, neighbour-list margin; 0 rebuilds whenever anything moves
   Real drag = 0;        // kg/m, quadratic air drag F = -drag |v| v on every particle (0: none)
   PairEvaluation pairs = PairEvaluation::both_sides;  // see PairEvaluation
-  PairThreads pair_threads = PairThreads::automatic;  // see PairThreads
   // Keep the energy accounts (blaze/particles/energy_ledger.hpp: the drive's work and the
   // dissipation by contact class) even in a still world; a world that moves keeps them anyway.
   bool energy_ledger = false;
@@ -75,6 +74,7 @@ struct SimulationParams {
   // so a run over any number of ranks (pipeline/parallel/) is bitwise one process's with this on.
   // Off: the list's cell order and the lower index (cheaper by a sort per list at each rebuild).
   bool canonical_order = false;
+  PairThreads pair_threads = PairThreads::automatic;  // with pairs once: see PairThreads
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
