@@ -595,7 +595,7 @@ class Simulation {
                                             broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until()))),
         kernel_phase("contacts", contact_forces(history_dt), !once),
         kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt, broad_.images(),
-                                                                             entry_threads() ? store_.size() : 0}, once),
+                                                                             entry_threads(nl.capacity) ? store_.size() : 0}, once),
         kernel_phase("contacts", GatherPairForces<Real, Features, kMoments>{p, nl, slots, contact_stats(), broad_.images()}, once),
         kernel_phase("walls", world_forces(history_dt), !world_.empty()),
         kernel_phase("integrate", integrate<Stage::post_force>()));
@@ -603,9 +603,11 @@ class Simulation {
     return phases;
   }
 
-  // Whether the pair phase runs a thread a list entry (PairThreads).
-  bool entry_threads() const {
+  // Whether the pair phase runs a thread a list entry (PairThreads; `capacity`: the list's).
+  bool entry_threads(Index capacity) const {
     if constexpr (Features::thesis_power) return false;
+    const double items = static_cast<double>(store_.size()) * static_cast<double>(capacity);
+    if (items > 2147483647.0) return false;  // (the items are counted in an Index)
     if (params_.pair_threads != PairThreads::automatic) return params_.pair_threads == PairThreads::entry;
     return !std::is_same_v<Space, Host> && store_.size() < kEntryThreadsBelow;
   }
