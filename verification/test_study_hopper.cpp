@@ -8,7 +8,7 @@
 // damaged one, one whose time series is gone and bad options are refused, naming what is wrong.
 #include <boost/test/unit_test.hpp>
 
-#include <cstdlib>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -34,19 +34,14 @@ struct HopperCase {
 
 // Small versions of the studies' scenes: 300 beads fed in 0.05 s into a 96-triangle silo, the gate
 // opening at 0.2 s; 60 corn kernels fed in 0.1 s into a 16-triangle hopper, the gate at 0.2 s.
+const char* const kSilo = "studies/silo/make_silo_stl.py --radius 0.04 --height 0.12 --orifice-radius 0.01 --segments 16";
+const char* const kSiloSets =
+    "--set study.orifice_half_width=0.01 --set simulation.end_time=0.4 --set study.gate_open_time=0.2 --set feed[0].count=300 "
+    "--set feed[0].rate=6000 --set feed[0].end_time=0.05 "
+    "--set 'feed[0].region={ kind = \"cylinder\", centre = [0.0, 0.06, 0.0], axis = [0.0, 1.0, 0.0], radius = 0.035, length = 0.04 }'";
 const HopperCase kCases[] = {
-    {"beads in a silo", "studies/silo/make_silo_stl.py --radius 0.04 --height 0.12 --orifice-radius 0.01 --segments 16",
-     "studies/silo/beverloo.toml",
-     "--set study.orifice_half_width=0.01 --set simulation.end_time=0.4 --set study.gate_open_time=0.2 --set feed[0].count=300 "
-     "--set feed[0].rate=6000 --set feed[0].end_time=0.05 "
-     "--set 'feed[0].region={ kind = \"cylinder\", centre = [0.0, 0.06, 0.0], axis = [0.0, 1.0, 0.0], radius = 0.035, length = 0.04 }'",
-     300, 0.03},
-    {"beads in a silo", "studies/silo/make_silo_stl.py --radius 0.04 --height 0.12 --orifice-radius 0.01 --segments 16",
-     "studies/silo/beverloo.toml",
-     "--set study.orifice_half_width=0.01 --set simulation.end_time=0.4 --set study.gate_open_time=0.2 --set feed[0].count=300 "
-     "--set feed[0].rate=6000 --set feed[0].end_time=0.05 "
-     "--set 'feed[0].region={ kind = \"cylinder\", centre = [0.0, 0.06, 0.0], axis = [0.0, 1.0, 0.0], radius = 0.035, length = 0.04 }'",
-     300, 0.02},
+    {"beads in a silo", kSilo, "studies/silo/beverloo.toml", kSiloSets, 300, 0.03},
+    {"beads in a silo", kSilo, "studies/silo/beverloo.toml", kSiloSets, 300, 0.02},
     {"corn in a hopper", "studies/hopper/make_hopper_stl.py --width 0.08 --height 0.1 --angle 60 --orifice 0.03",
      "studies/hopper/corn.toml",
      "--set study.orifice_half_width=0.015 --set simulation.end_time=0.35 --set study.gate_open_time=0.2 --set feed[0].count=60 "
