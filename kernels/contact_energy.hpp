@@ -14,6 +14,10 @@
 // particle; reduce_in_order (exec/primitives.hpp, through kernels/sample_tally.hpp) adds them in
 // a fixed order per backend, so the total is deterministic (no atomics) and the backends agree up
 // to the geometry's rounding and their two summation orders.
+// The two sums are two kernels (Part: pairs, then walls), each writing its own slots: in one kernel
+// nvcc gave a polyhedron with a mesh a 30 KB stack frame a thread (1.2 KB for the pairs alone,
+// 7.2 KB for the walls), and a CUDA context reserves a kernel's frame for every thread the GPU can
+// hold: 8.3 GB on an H100, which ran twelve corn hoppers side by side out of memory (make fig-2.17).
 #pragma once
 #include "blaze/exec/launch.hpp"
 #include "blaze/laws/contact_law.hpp"
@@ -32,7 +36,9 @@ struct ContactEnergySlots {
   Index* wall_contacts;  // world objects touched
 };
 
-template <class Shape, class Law>
+enum class ContactEnergyPart { pairs, walls };
+
+template <class Shape, class Law, ContactEnergyPart Part>
 struct StoredContactEnergy {
   using Real = typename Law::real_type;
   static constexpr int kMinBlocks = min_blocks_v<Shape>;  // launch.hpp
@@ -48,10 +54,15 @@ struct StoredContactEnergy {
   const std::uint8_t* counted = nullptr;
 
   BLAZE_HD void operator()(Index i) const {
+    if constexpr (Part == ContactEnergyPart::pairs) out.pairs[i] = pair_sum(i);
+    else wall_sum(i);
+  }
+
+ private:
+  BLAZE_HD double pair_sum(Index i) const {
     const auto bi = shape.body(p, i);
     const int mi = p.material[i];
-    double pairs = 0, walls = 0;
-    Index touched = 0;
+    double pairs = 0;
     const Index count = min_r(list.count[i], list.capacity);
     for (Index k = 0; k < count; ++k) {
       const Index j = list.at(k, i);
@@ -64,6 +75,13 @@ struct StoredContactEnergy {
       const auto state = Law::kHistory ? history.load(list.offset(k, i)) : Law::State::zero();
       pairs += laws(mi, p.material[j]).stored_energy(g, state);
     }
+    return pairs;
+  }
+  BLAZE_HD void wall_sum(Index i) const {
+    const auto bi = shape.body(p, i);
+    const int mi = p.material[i];
+    double walls = 0;
+    Index touched = 0;
     for_each_world_contact(shape, bi, world, i, [&](const auto& g, int material, int, WallKey key, const auto*) {
       if (!g.touching) return;
       auto state = Law::State::zero();
@@ -74,7 +92,6 @@ struct StoredContactEnergy {
       walls += laws(mi, material).stored_energy(g, state);
       ++touched;
     });
-    out.pairs[i] = pairs;
     out.walls[i] = walls;
     out.wall_contacts[i] = touched;
   }

@@ -733,7 +733,7 @@ class Simulation {
     for (std::size_t k = 0; k < s.size(); ++k) s.inertia[k] = shape_.principal_inertia(inv_i[k], s.radius[k], s.type[k]);
     return s;
   }
-  // The sample's reduction; with_energy runs StoredContactEnergy first (its per-particle slots).
+  // The sample's reduction; with_energy runs StoredContactEnergy's two parts first (their per-particle slots).
   // count_only's flags (null: count every particle); flags set for an order the store has left
   // are an error, never silently all.
   const std::uint8_t* counted() const {
@@ -749,8 +749,13 @@ class Simulation {
         b->ensure(static_cast<std::size_t>(n));
       energy_wall_contacts_.ensure(static_cast<std::size_t>(n));
       const ContactEnergySlots slots{energy_pairs_.data(), energy_walls_.data(), energy_wall_contacts_.data()};
-      for_each(Space{}, n, StoredContactEnergy<Shape, Law>{shape_, store_.view(), broad_.neighbours(), lists_.attach(world_.view()), laws_,
-                                                           slots, contacts_.pairs(), contacts_.walls(), broad_.images(), counted()});
+      const auto energy = [&](auto part) {
+        for_each(Space{}, n, StoredContactEnergy<Shape, Law, decltype(part)::value>{shape_, store_.view(), broad_.neighbours(),
+                                                                                  lists_.attach(world_.view()), laws_, slots, contacts_.pairs(),
+                                                                                  contacts_.walls(), broad_.images(), counted()});
+      };
+      energy(std::integral_constant<ContactEnergyPart, ContactEnergyPart::pairs>{});
+      energy(std::integral_constant<ContactEnergyPart, ContactEnergyPart::walls>{});
       f.pair_energy = energy_pairs_.data(), f.wall_energy = energy_walls_.data(), f.wall_contacts = energy_wall_contacts_.data();
     }
     if constexpr (Features::statistics)
