@@ -6,7 +6,7 @@
 # discharged; a run whose flow stops for [study] arch_time with kernels over the orifice has arched.
 # Writes DIR/W<mm>_s<seed>/ (each run's output), DIR/summary.csv, studies/hopper/corn.md (per orifice:
 # the runs that arched, when, and the mass that left before) and plots/fig-2.17.png.
-# A GPU target (13 824 polyhedra, ~1e6 steps a run).
+# A GPU target (13 824 polyhedra, 2.4e5 steps a run; the twelve side by side under MPS: ~20 min of an H100).
 # Usage: tools/corn_arching.sh STUDY_BINARY [DIR]           (DIR defaults to data/hopper/corn)
 #   CORN_SET="feed[0].count=600 ..." adds --set overrides to every run (small trial runs);
 #   CORN_RUN=0 only summarises the runs already in DIR.

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# On the lent GPU machine: make fig-2.17 (tools/corn_arching.sh) in device calls of under 10
+# minutes. Each call builds study_hopper if needed (~250 s on 16 cores, the first call only: the
+# build and the runs stay on a warm machine between calls), runs the twelve corn runs side by side
+# under MPS and stops them at a checkpoint after STOP seconds (default 500); the next call continues
+# them bitwise. The runs live in build/corn (kept between calls like any build output). Every call
+# returns the runs' logs and time series (no frames) in $OUT/corn.tgz; the call in which all have
+# ended also returns studies/hopper/corn.md, summary.csv and plots/fig-2.17.png.
+# Usage: tools/gpu_corn.sh [STOP]        (JOBS=N: side by side, default 12)
+set -uo pipefail
+cd "$(dirname "$0")/.."
+out=${OUT:-/tmp/blaze-gpu}; mkdir -p "$out"
+. tools/device_env.sh
+T0=$(date +%s)
+make -j"$(nproc)" build/cuda/study_hopper > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; exit 1; }
+echo "study_hopper ready: $(( $(date +%s) - T0 )) s"
+nvidia-cuda-mps-control -d 2> /dev/null
+stop=${1:-500}
+stop=$(( stop - ($(date +%s) - T0) )); [ "$stop" -ge 30 ] || stop=30
+# a checkpoint every 0.02 s of simulated time: ~1 400 steps, a few seconds past the stop
+CORN_JOBS=${JOBS:-12} CORN_STOP_AFTER=$stop CORN_CHECKPOINT=${CORN_CHECKPOINT:-0.02} tools/corn_arching.sh build/cuda/study_hopper build/corn
+status=$?
+echo "corn_arching: status $status after $(( $(date +%s) - T0 )) s"
+for f in build/corn/W*_s*.log; do echo "$f: $(grep -a "^pace:" "$f" | tail -1)"; done
+tar czf "$out/corn.tgz" --exclude='*.vtu' --exclude='*.blz' --exclude='*.pvd' build/corn
+if [ "$status" = 0 ]; then cp studies/hopper/corn.md build/corn/summary.csv "$out/"; cp plots/fig-2.17.png "$out/" 2> /dev/null; fi
+echo quit | nvidia-cuda-mps-control
+exit "$status"
