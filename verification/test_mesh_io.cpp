@@ -221,6 +221,13 @@ BOOST_AUTO_TEST_CASE(malformed_files_are_refused_naming_the_place) {
   BOOST_TEST(error_of(stl).rfind(stl + ":7: a facet needs three vertices, got 2", 0) == 0, error_of(stl));
   write_text(stl, "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 nan 0\n");
   BOOST_TEST(error_of(stl).rfind(stl + ":6:", 0) == 0, error_of(stl));
+  // cut after a whole facet: only the missing endsolid tells
+  const std::string facet = " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\n";
+  write_text(stl, "solid x\n" + facet + facet);
+  BOOST_TEST(error_of(stl) == stl + ": the file ends without 'endsolid' after 2 facets: it is truncated (an ASCII STL closes its solid with 'endsolid')",
+             error_of(stl));
+  write_text(stl, "solid x\n" + facet + "endsolid x\n" + facet);
+  BOOST_TEST(error_of(stl).rfind(stl + ":10: 'facet' after 'endsolid'", 0) == 0, error_of(stl));
   write_text(stl, std::string(80, 'x') + std::string("\x02\0\0\0", 4) + std::string(60, '\0'));  // 2 triangles promised, 1.2 given
   BOOST_TEST(error_of(stl).find("neither a binary STL (84 + 50 n bytes for n triangles; this file has 144) nor an ASCII one") != std::string::npos, error_of(stl));
   write_text(obj, "v 0 0 0\nv 1 0 0\nf 1 2 3\n");

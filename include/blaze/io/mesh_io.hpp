@@ -81,7 +81,7 @@ inline TriangleMesh parse_ascii_stl(std::istream& in, const std::string& source)
   TriangleMesh m;
   std::string line;
   int in_facet = -1;  // vertices read in the current facet, -1 outside one
-  bool solid = false;
+  bool solid = false, open = false;  // a solid seen; one begun and not ended (several may follow each other)
   long facets = 0;
   for (long number = 1; std::getline(in, line); ++number) {
     std::istringstream s(line);
@@ -89,9 +89,11 @@ inline TriangleMesh parse_ascii_stl(std::istream& in, const std::string& source)
     if (!(s >> key)) continue;
     const auto fail = [&](const std::string& what) { throw MeshError(source + ":" + std::to_string(number) + ": " + what); };
     if (key == "solid") {
-      solid = true;
+      if (open) fail("'solid' inside a solid (missing 'endsolid')");
+      solid = open = true;
     } else if (key == "facet") {
       if (!solid) fail("'facet' before 'solid'");
+      if (!open) fail("'facet' after 'endsolid'");
       if (in_facet >= 0) fail("'facet' inside a facet (missing 'endfacet')");
       in_facet = 0;
       ++facets;
@@ -109,7 +111,10 @@ inline TriangleMesh parse_ascii_stl(std::istream& in, const std::string& source)
       m.triangles.push_back({b, b + 1, b + 2});
       m.file_index.push_back(facets);
       in_facet = -1;
-    } else if (key == "outer" || key == "endloop" || key == "endsolid") {
+    } else if (key == "endsolid") {
+      if (in_facet >= 0) fail("'endsolid' inside facet " + std::to_string(facets) + " (missing 'endfacet')");
+      open = false;
+    } else if (key == "outer" || key == "endloop") {
       continue;
     } else {
       fail("unexpected '" + key + "' (an ASCII STL has solid, facet, outer loop, vertex, endloop, endfacet, endsolid)");
@@ -117,6 +122,10 @@ inline TriangleMesh parse_ascii_stl(std::istream& in, const std::string& source)
   }
   if (!solid) throw MeshError(source + ": neither a binary STL (84 + 50 n bytes) nor an ASCII one (starting with 'solid')");
   if (in_facet >= 0) throw MeshError(source + ": the file ends inside facet " + std::to_string(facets));
+  // Every ASCII STL ends its solid with 'endsolid': a file without it was cut short, at a facet's
+  // end by chance, and holds only part of the surface.
+  if (open) throw MeshError(source + ": the file ends without 'endsolid' after " + std::to_string(facets) +
+                            " facet" + (facets == 1 ? "" : "s") + ": it is truncated (an ASCII STL closes its solid with 'endsolid')");
   return m;
 }
 
