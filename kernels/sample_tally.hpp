@@ -56,6 +56,11 @@ struct ParticleTally {
   const Index* edge_edge;
   double threshold;
   const std::uint8_t* counted = nullptr;
+  // Periodic axes: the image counts per axis (null: not periodic there) and the periods (m). The
+  // potential energy is that of the unwrapped position x + image L: a particle that wraps along
+  // gravity keeps falling, and its wrapped height would hand it m g L back at every crossing.
+  const Index* image[3] = {nullptr, nullptr, nullptr};
+  Vec3<double> period{0, 0, 0};
 
   BLAZE_HD SampleTally operator()(Index i) const {
     SampleTally t;
@@ -65,6 +70,10 @@ struct ParticleTally {
                                      p.angular_velocity.get(i), shape.principal_inertia(p.inv_inertia[i], p.radius[i], p.type[i]),
                                      p.position.get(i), gravity);
     t.translational = e.translational, t.rotational = e.rotational, t.potential = e.potential;
+    const Vec3<double> g = vec_cast<double>(gravity);
+    if (image[0]) t.potential -= static_cast<double>(m) * g.x * period.x * static_cast<double>(image[0][i]);
+    if (image[1]) t.potential -= static_cast<double>(m) * g.y * period.y * static_cast<double>(image[1][i]);
+    if (image[2]) t.potential -= static_cast<double>(m) * g.z * period.z * static_cast<double>(image[2][i]);
     t.mass = static_cast<double>(m);
     if (pair_energy) t.pair_energy = pair_energy[i], t.wall_energy = wall_energy[i], t.wall_contacts = wall_contacts[i];
     if (vertex_face) t.vertex_face = vertex_face[i], t.edge_edge = edge_edge[i];

@@ -744,6 +744,8 @@ class Simulation {
   SampleTally tally(bool with_energy, double threshold) {
     const Index n = store_.size();
     ParticleTally<Shape, Real> f{shape_, store_.view(), params_.gravity, nullptr, nullptr, nullptr, nullptr, nullptr, threshold, counted()};
+    for (int d = 0; d < 3; ++d) f.image[d] = store_.image(d);
+    f.period = vec_cast<double>(broad_.grid().length);
     if (with_energy) {
       for (auto* b : {&energy_pairs_, &energy_walls_})
         b->ensure(static_cast<std::size_t>(n));

@@ -140,9 +140,12 @@ class WorldOverlapCheck {
     return false;
   }
 
-  // After every particle: walls that face away from all the particles over them.
+  // After every particle: walls that face away from all the particles over them. Not the [mill]'s
+  // own faces, oriented by construction: an undercut lifter's face (face_angle < 0) looks down at
+  // the shell, with the charge behind its plane and none over its front.
   void finish() const {
     for (std::size_t k = 0; k < polygons_.size(); ++k) {
+      if (mill_part_[k]) continue;
       const Vec3<double> n = polygons_[k].normal;
       if (behind_[k] > 0 && front_[k] == 0 && dot(s_.gravity, n) > 0)
         throw SceneError(s_.place("wall[" + std::to_string(k) + "].vertices") + ": the wall faces away from the " +
