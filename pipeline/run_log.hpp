@@ -160,7 +160,7 @@ class RunLog {
                     sim.time(), static_cast<unsigned long long>(sim.steps()), gain, work_, gain / scale, scale, gain_limit_);
       throw EnergyGain(msg);
     }
-    max_gain_ = std::max(max_gain_, gain / scale);
+    if (scale > 0) max_gain_ = std::max(max_gain_, gain / scale), compared_ = true;
 
     const long vf = smp.vertex_face, ee = smp.edge_edge;
     const PenetrationReport& pen = smp.penetration;
@@ -193,6 +193,7 @@ class RunLog {
   double worst_penetration() const { return worst_; }
   // Largest (E(t) + E_removed - E(0)) / scale over the samples written (<= 0: never above E(0)).
   double max_energy_gain() const { return max_gain_; }
+  bool energy_compared() const { return compared_; }  // a sample had a scale to compare the gain with
   long samples_over_limit() const { return over_samples_; }
 
  private:
@@ -204,6 +205,7 @@ class RunLog {
   Vec3<Real> gravity_;
   double height_;
   double e0_ = 0, scale_ = 0, worst_ = 0, max_gain_ = -1e300;
+  bool compared_ = false;
   double work_ = 0;  // J, W(t)
   bool ledger_;
   LoadColumns loads_;

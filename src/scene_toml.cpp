@@ -253,6 +253,13 @@ class Fields {
   std::string label_, file_;
 };
 
+// Exactly one of keys a and b (`what` names both): both given is an error at b's line, neither one
+// at the table's.
+void one_of(Fields& f, const std::string& a, const std::string& b, const std::string& what) {
+  if (f.has(a) && f.has(b)) f.fail(*f.get(b), b, "give one of " + what + ", not both (" + a + " is given too)");
+  if (!f.has(a) && !f.has(b)) f.missing(a, "or " + b + ": give one of " + what);
+}
+
 // ---- command-line overrides -----------------------------------------------------------------
 
 // The key grammar of --set, parsed strictly (a loose split accepted "material[0.density" and
@@ -300,6 +307,12 @@ std::vector<std::string> split_path(const std::string& key, const std::string& a
 // True when parts[k] came from an index in brackets (digits only; names start with a letter or '_').
 bool is_index(const std::string& part) { return !part.empty() && std::isdigit(static_cast<unsigned char>(part[0])); }
 
+const std::vector<std::string> kSimulationKeys = {
+    "law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag", "domain_lo", "domain_hi", "skin",
+    "pair_evaluation", "world_lists", "force_dt", "max_impact_speed", "seed", "force_long_run", "tangential", "rolling", "periodic"};
+const std::vector<std::string> kOutputKeys = {"directory", "csv_interval", "vtu_interval", "checkpoint_interval",
+                                              "penetration_warning", "energy_gain_limit", "energy_by_class"};
+
 void apply_override(toml::table& root, const std::string& arg) {
   const auto eq = arg.find('=');
   const std::string usage = "command line --set " + arg + ": expected key=value, for example --set simulation.dt=1e-5";
@@ -313,9 +326,9 @@ void apply_override(toml::table& root, const std::string& arg) {
                        "give one value on one line");
   std::vector<std::string> parts = split_path(key, arg);
   if (is_index(parts[0])) throw SceneError("command line --set " + arg + ": a key starts with a name");
-  if (parts.size() == 1) {  // bare key: [simulation], or [output] or [study] where the key is there
-    const bool in_sim = !!root["simulation"][parts[0]];
-    const char* table = !in_sim && root["output"][parts[0]] ? "output" : !in_sim && root["study"][parts[0]] ? "study" : "simulation";
+  if (parts.size() == 1) {  // bare key: a key of [output] goes there, one of [study] where the file has it, others to [simulation]
+    const auto is = [&](const std::vector<std::string>& keys) { return std::find(keys.begin(), keys.end(), parts[0]) != keys.end(); };
+    const char* table = is(kOutputKeys) && !is(kSimulationKeys) ? "output" : !is(kSimulationKeys) && root["study"][parts[0]] ? "study" : "simulation";
     parts.insert(parts.begin(), table);
   }
   if (is_index(parts.back())) throw SceneError("command line --set " + arg + ": the key must end with a name, as material[0].density");
@@ -406,9 +419,7 @@ int lookup(Fields& f, const std::string& key, const std::vector<std::string>& na
 }
 
 void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
-  Fields f(t, "[simulation]", file, {"law", "precision", "backend", "dt", "steps_per_contact", "end_time", "gravity", "drag",
-                                        "domain_lo", "domain_hi", "skin", "pair_evaluation", "world_lists", "force_dt", "max_impact_speed", "seed",
-                                        "force_long_run", "tangential", "rolling", "periodic"});
+  Fields f(t, "[simulation]", file, kSimulationKeys);
   s.law = static_cast<LawKind>(f.choice("law", {"linear", "hertz"}, 0));
   s.tangential = static_cast<TangentialKind>(f.choice("tangential", {"history_free", "mindlin", "linear_spring"}, 0));
   if (s.tangential == TangentialKind::mindlin && s.law != LawKind::hertz)
@@ -460,9 +471,7 @@ void read_simulation(const toml::table& t, const std::string& file, Scene& s) {
 }
 
 void read_output(const toml::table& t, const std::string& file, Scene& s) {
-  Fields f(t, "[output]", file,
-           {"directory", "csv_interval", "vtu_interval", "checkpoint_interval", "penetration_warning", "energy_gain_limit",
-            "energy_by_class"});
+  Fields f(t, "[output]", file, kOutputKeys);
   s.output.directory = f.string_or("directory", "data/run", "a directory path (created if missing)");
   s.output.csv_interval = f.number_or("csv_interval", 0, non_negative("s (0: no CSV)"));
   s.output.vtu_interval = f.number_or("vtu_interval", 0, non_negative("s (0: no VTU frames)"));
@@ -785,10 +794,15 @@ void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
     d.size = read_size(f, file, t.size());  // polyhedra: bounding radii, the shape scaled to each
     const double r = d.size.largest();
     d.region = read_region(f, file, s, r);
-    d.start = f.number_or("start_time", 0, non_negative("s"));
-    d.end = f.number_or("end_time", s.end_time, {d.start, kInf, true, false, "s (after start_time)"});
-    if (f.has("rate") == f.has("mass_rate"))
-      f.missing("rate", "exactly one of rate (particles/s) and mass_rate (kg/s)");
+    // A feed starts before the run ends (one that would start later inserts nothing) and lasts to
+    // its end_time; without one it lasts the run, so a restart that runs longer (--set end_time)
+    // feeds on. (An end_time past the run's is kept as given: a run stopped there and continued
+    // with a later end_time is bitwise the run that was that long from the start.)
+    const std::string run_end = "s (before the run's end_time, " + Scene::shortest(s.end_time) + " s)";
+    d.start = f.number_or("start_time", 0, {0, s.end_time, false, true, run_end.c_str()});
+    d.end_given = f.number_or("end_time", kInf, {d.start, kInf, true, false, "s (after start_time)"});
+    d.end = d.end_given < kInf ? d.end_given : s.end_time;
+    one_of(f, "rate", "mass_rate", "rate (particles/s) and mass_rate (kg/s)");
     d.rate = f.number_or("rate", 0, {0, 1e12, true, false, "particles/s"});
     d.mass_rate = f.number_or("mass_rate", 0, {0, 1e12, true, false, "kg/s"});
     d.count = f.integer_or("count", 0, 0, kMaxParticles);
@@ -863,9 +877,7 @@ Motion read_motion(Fields& object, const std::string& file, const std::string& l
     case MotionKind::rotation: {
       m.axis = unit("axis");
       m.point = f.vec3("point", position("m"));
-      if (f.has("rpm") == f.has("omega"))
-        f.fail(f.has("rpm") ? *f.get("omega") : *f.get("kind"), f.has("rpm") ? "omega" : "kind",
-               "a rotation takes exactly one of rpm (revolutions per minute) and omega (rad/s), signed by the right-hand rule about axis");
+      one_of(f, "rpm", "omega", "rpm (revolutions per minute) and omega (rad/s), signed by the right-hand rule about axis");
       const Range spin{-1e7, 1e7, false, false, f.has("rpm") ? "rpm" : "rad/s"};
       m.omega = f.has("rpm") ? f.number("rpm", spin) * 2 * 3.14159265358979323846 / 60 : f.number("omega", spin);
       break;
@@ -1074,9 +1086,7 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
   m.axis = m.axis * (1 / norm(m.axis));
   m.diameter = f.number("diameter", up_to(kMaxCoordinate, "m"));
   m.length = f.number("length", up_to(kMaxCoordinate, "m"));
-  if (f.has("rpm") == f.has("omega"))
-    f.fail(f.has("rpm") ? *f.get("omega") : *f.get("diameter"), f.has("rpm") ? "omega" : "rpm",
-           "exactly one of rpm (revolutions per minute) and omega (rad/s), signed by the right-hand rule about axis");
+  one_of(f, "rpm", "omega", "rpm (revolutions per minute) and omega (rad/s), signed by the right-hand rule about axis");
   m.omega = f.has("rpm") ? f.number("rpm", {-1e6, 1e6, false, false, "rpm"}) * 2 * 3.14159265358979323846 / 60
                          : f.number("omega", {-1e5, 1e5, false, false, "rad/s"});
   m.start = f.number_or("start_time", 0, non_negative("s"));
@@ -1210,18 +1220,6 @@ std::string shown_vec(const Vec3<double>& v) {
   return "[" + Scene::shortest(v.x) + ", " + Scene::shortest(v.y) + ", " + Scene::shortest(v.z) + "]";
 }
 
-// The largest initial speed of any placement (m/s), and where it is.
-double largest_initial_speed(const Scene& s, std::string& key) {
-  double v0 = 0;
-  for (std::size_t k = 0; k < s.lattices.size(); ++k)
-    if (norm(s.lattices[k].velocity) > v0) v0 = norm(s.lattices[k].velocity), key = "lattice[" + std::to_string(k) + "].velocity";
-  for (std::size_t k = 0; k < s.fills.size(); ++k)
-    if (norm(s.fills[k].velocity) > v0) v0 = norm(s.fills[k].velocity), key = "fill[" + std::to_string(k) + "].velocity";
-  for (std::size_t k = 0; k < s.lists.size(); ++k)
-    for (const auto& v : s.lists[k].velocity)
-      if (norm(v) > v0) v0 = norm(v), key = "particles[" + std::to_string(k) + "].velocities";
-  return v0;
-}
 
 // Derived sizes (run_size.hpp), computed in double and refused before anything is allocated,
 // naming the key that makes them too large: the grid's cells, the step count.
@@ -1265,7 +1263,7 @@ void check_sizes(Scene& s) {
 void check_impact_speed(const toml::table& sim, const std::string& file, const Scene& s) {
   if (!(s.max_impact_speed > 0)) return;
   std::string key;
-  const double v0 = largest_initial_speed(s, key);
+  const double v0 = largest_initial_speed(s, &key);
   if (v0 <= s.max_impact_speed) return;
   Fields f(sim, "[simulation]", file);
   f.fail(*f.get("max_impact_speed"), "max_impact_speed",

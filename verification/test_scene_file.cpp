@@ -11,6 +11,7 @@
 #include "blaze/shapes/sphere_shape.hpp"
 #include "blaze/scene/scene_build.hpp"
 #include "blaze/scene/scene_file.hpp"
+#include "blaze/scene/scene_identity.hpp"
 #include "pipeline/scene_law.hpp"
 #include "pipeline/simulation.hpp"
 #include "verification/tolerances.hpp"
@@ -245,7 +246,7 @@ BOOST_AUTO_TEST_CASE(wall_motions_are_read_and_bad_ones_named) {
   };
   const Bad bad[] = {
       {"motion = { kind = \"spin\" }", "key 'kind' = \"spin\"", "one of \"none\" \"rotation\" \"translation\" \"vibration\""},
-      {"motion = { kind = \"rotation\", axis = [0, 1, 0], point = [0, 0, 0] }", "key 'kind'", "exactly one of rpm"},
+      {"motion = { kind = \"rotation\", axis = [0, 1, 0], point = [0, 0, 0] }", "missing key 'rpm'", "or omega: give one of rpm"},
       {"motion = { kind = \"rotation\", axis = [0, 0, 0], point = [0, 0, 0], rpm = 3 }", "key 'axis' = [0, 0, 0]",
        "a non-zero direction"},
       {"motion = { kind = \"vibration\", amplitude = 1e-3, frequency = 20, direction = [0, 1, 0], rpm = 3 }", "key 'rpm' = 3",
@@ -296,7 +297,7 @@ BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
       {"axis = [0, 0, 1]", "axis = [0, 0, 0]", "key 'axis' = [0, 0, 0]", "an axis of zero length has none"},
       {"count = 8", "count = 80", "key 'count' = 80", "fit around the shell"},
       {"width = 0.04 }", "width = 0.04, face_angle = 40 }", "key 'face_angle' = 40", "height tan(face_angle) < width / 2"},
-      {"rpm = 32", "rpm = 32\nomega = 3", "key 'omega' = 3", "exactly one of rpm"},
+      {"rpm = 32", "rpm = 32\nomega = 3", "key 'omega' = 3", "not both (rpm is given too)"},
       {"diameter = 0.9", "diameter = -0.9", "key 'diameter' = -0.9", "must be in (0, 1e+09] m"},
       {"rpm = 32", "rpms = 32", "unknown key 'rpms'", "allowed: material, centre"},
   };
@@ -755,3 +756,54 @@ BOOST_AUTO_TEST_CASE(every_shipped_scene_loads) {
   BOOST_TEST(loaded >= 15);
 }
 BOOST_AUTO_TEST_SUITE_END()
+
+// Found by trying Blaze as an adversarial user would (stop 49): each was a crash, a silent wrong
+// run or a message naming the wrong key.
+BOOST_AUTO_TEST_CASE(adversarial_feeds_mills_and_overrides_are_named) {
+  const std::string feed = "\n[[feed]]\ntype = \"bead\"\nregion = { kind = \"box\", lo = [-0.02, 0.05, -0.02], hi = [0.02, 0.08, 0.02] }\n"
+                           "rate = 2000\n";
+  // a feed starting at or after the run's end inserted nothing and sized the run negative (a crash)
+  for (const double start : {0.01, 0.5}) {
+    const std::string text = kBase + feed + "start_time = " + std::to_string(start) + "\n";
+    const std::string msg = rejection([&] { parse_scene(text, "scene.toml"); });
+    BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line_of(text, "start_time")) + ": [[feed]] #1: key 'start_time'"), msg);
+    BOOST_TEST(has(msg, "before the run's end_time, 0.01 s"), msg);
+  }
+  BOOST_TEST(parse_scene(kBase + feed + "start_time = 0.005\n", "scene.toml").feeds.size() == 1u);
+  // a feed's velocity (and spread) enters the impact speed, as every placement's does
+  const double still = parse_scene(kBase + feed, "scene.toml").impact_speed;
+  for (const double v : {2.0, 5.0}) {
+    const Scene fast = parse_scene(kBase + feed + "velocity = [0, -" + std::to_string(v) + ", 0]\nvelocity_spread = 0.5\n", "scene.toml",
+                                   {"force_dt=true"});
+    BOOST_TEST(std::fabs(fast.impact_speed - still - (v + 0.5)) < 1e-9, v);
+  }
+  // rate and mass_rate: both, or neither, named as such
+  std::string msg = rejection([&] { parse_scene(kBase + feed + "mass_rate = 1\n", "scene.toml"); });
+  BOOST_TEST((has(msg, "key 'mass_rate' = 1") && has(msg, "not both (rate is given too)")), msg);
+  std::string no_rate = kBase + feed;
+  no_rate.replace(no_rate.find("rate = 2000\n"), 12, "");
+  msg = rejection([&] { parse_scene(no_rate, "scene.toml"); });
+  BOOST_TEST(has(msg, "[[feed]] #1: missing key 'rate' (or mass_rate: give one of rate"), msg);
+  // without an end_time a feed lasts the run: its identity does not hold the run's end (a restart
+  // may run longer); a given end_time is kept as given
+  const auto times = [](const Scene& s) {
+    for (const auto& [k, v] : scene_identity(s))
+      if (k == "feed[0].times") return v;
+    return std::string("none");
+  };
+  const Scene run = parse_scene(kBase + feed, "scene.toml"), longer = parse_scene(kBase + feed, "scene.toml", {"end_time=0.02"});
+  BOOST_TEST(times(run) == times(longer));
+  BOOST_TEST(longer.feeds[0].end == 0.02);
+  const Scene given = parse_scene(kBase + feed + "end_time = 0.05\n", "scene.toml");
+  BOOST_TEST(given.feeds[0].end == 0.05);
+  BOOST_TEST(times(given) != times(run));
+  // a bare --set key of [output] goes to [output] whether or not the file has it
+  const Scene o = parse_scene(kBase, "scene.toml", {"vtu_interval=0.002", "energy_gain_limit=0.1", "checkpoint_interval=0.005"});
+  BOOST_TEST(o.output.vtu_interval == 0.002);
+  BOOST_TEST(o.output.energy_gain_limit == 0.1);
+  BOOST_TEST(o.output.checkpoint_interval == 0.005);
+  // a mill with neither rpm nor omega names the [mill], not its diameter
+  const std::string mill = "\n[mill]\nmaterial = \"steel\"\ncentre = [0, 0, 0]\naxis = [0, 0, 1]\ndiameter = 0.19\nlength = 0.15\n";
+  msg = rejection([&] { parse_scene(kBase + mill, "scene.toml"); });
+  BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line_of(kBase + mill, "[mill]")) + ": [mill]: missing key 'rpm' (or omega"), msg);
+}

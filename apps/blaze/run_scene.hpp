@@ -117,14 +117,31 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   std::vector<Feeder<Real>> feeders;
   for (std::size_t k = 0; k < s.feeds.size(); ++k) feeders.emplace_back(s, k, table);
   if (!o.restart.empty()) restore_feeders(feeders, feeder_bytes, o.restart);
+  // A restart at the end steps nothing and loses nothing; past it, it is a mistake, refused before
+  // any output (the time series, the collections) is trimmed to the checkpoint.
+  if (!o.restart.empty() && sim.steps() > static_cast<std::uint64_t>(std::llround(s.end_time / s.dt)))
+    throw CheckpointError(o.restart + ": the checkpoint is at t = " + Scene::shortest(sim.time()) + " s (step " +
+                          std::to_string(sim.steps()) + "), past this run's end_time = " + Scene::shortest(s.end_time) +
+                          " s: give an end_time after the checkpoint's time (--set end_time=...)");
 
   const std::string& dir = s.output.directory;
   std::filesystem::create_directories(dir + "/vtu");
-  const double resume_at = o.restart.empty() ? -1 : sim.time() + 0.5 * s.dt;
+  const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));  // <= kMaxSteps (validated)
+  const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
+  const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
+  // On restart, the rows and frames that the stopped run wrote up to its checkpoint stay: those of
+  // the checkpoint's own step only where this run writes one there too (on its schedule, or its
+  // end), not the stopped run's last row or frame off the schedule (its end), which the run that
+  // never stopped does not have.
+  const auto kept_until = [&](std::uint64_t every_k) {
+    if (o.restart.empty()) return -1.0;
+    const bool written_here = sim.steps() == steps || (every_k > 0 && sim.steps() % every_k == 0);
+    return sim.time() + (written_here ? 0.5 : -0.5) * s.dt;
+  };
   const double g = norm(s.gravity), height = g > 0 ? std::abs(dot(s.gravity, s.domain_hi - s.domain_lo)) / g : 0;
   // Over ranks every rank samples (the samples are collective) and rank 0 writes.
   RunLog<Real> log(root ? dir + "/timeseries.csv" : std::string("/dev/null"), s.output.penetration_warning, s.output.energy_gain_limit,
-                   vec_cast<Real>(s.gravity), height, resume_at, sim.keeps_energy_ledger(), reported_loads(s), !feeders.empty());
+                   vec_cast<Real>(s.gravity), height, kept_until(csv_every), sim.keeps_energy_ledger(), reported_loads(s), !feeders.empty());
   // The last sampled state that passed the guards stays on the device (Simulation::keep_state());
   // it is downloaded only if a guard stops the run.
   sim.keep_state();
@@ -149,17 +166,14 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   BackgroundWriter frames;  // VTU frames written while the steps go on (after pvd: it goes first)
   if (!o.restart.empty()) {
     log.resume(restart_log);
-    frame = static_cast<int>(root ? pvd.resume(resume_at) : 0);
+    frame = static_cast<int>(root ? pvd.resume(kept_until(vtu_every)) : 0);
     if constexpr (kRanks) frame = static_cast<int>(sim.communicator().max(static_cast<long>(frame)));
-    pvd_faces.resume(resume_at);
-    if (pvd_walls) pvd_walls->resume(resume_at);
+    pvd_faces.resume(kept_until(vtu_every));
+    if (pvd_walls) pvd_walls->resume(kept_until(vtu_every));
     std::printf("restarted from %s at step %llu (t = %.6g s)\n", o.restart.c_str(),
                 static_cast<unsigned long long>(sim.steps()), sim.time());
   }
 
-  const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));  // <= kMaxSteps (validated)
-  const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
-  const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
   const std::uint64_t checkpoint_every = every(s.output.checkpoint_interval);
   Progress progress(!o.quiet && root, s.end_time);  // over ranks rank 0's line
   double particle_steps = 0;
@@ -236,8 +250,12 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
         f.feed(sim);
         feed_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - feed_start).count();
         if (f.shortfall() > 0 && feed_notes++ < kMaxFeedNotes)
-          std::printf("note: t = %.6g s: %s: %ld particles could not be placed (the region is full); they stay due%s\n", sim.time(),
-                      f.spec().name.c_str(), f.shortfall(), feed_notes == kMaxFeedNotes ? " [further such notes omitted]" : "");
+          std::printf("note: t = %.6g s: %s: %ld particles could not be placed (%s); they stay due%s\n", sim.time(),
+                      f.spec().name.c_str(), f.shortfall(),
+                      f.inserted() > 0 ? "the region is full"
+                                       : "none placed yet: no place in the region is clear of walls and particles; is it inside "
+                                         "or against a wall?",
+                      feed_notes == kMaxFeedNotes ? " [further such notes omitted]" : "");
       }
     sim_size = sim.size();  // over ranks a collective count: once a stretch
     const std::uint64_t next = next_event(k);
@@ -257,11 +275,12 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   const Index left = sim.size(), removed = sim.removed_count();  // collective over ranks
   std::printf("done: %llu steps, %u particles left, %u removed (left the domain)", static_cast<unsigned long long>(steps),
               static_cast<unsigned>(left), static_cast<unsigned>(removed));
-  if (csv_every)  // the guards' figures come from the samples
-    std::printf("; deepest penetration %.3g%% of the radius, over %.3g%% in %ld samples; largest energy gain %.3g of "
-                "the scale", 100 * log.worst_penetration(), 100 * s.output.penetration_warning, log.samples_over_limit(),
-                log.max_energy_gain());
-  else
+  if (csv_every) {  // the guards' figures come from the samples
+    std::printf("; deepest penetration %.3g%% of the radius, over %.3g%% in %ld samples; ", 100 * log.worst_penetration(),
+                100 * s.output.penetration_warning, log.samples_over_limit());
+    if (log.energy_compared()) std::printf("largest energy gain %.3g of the scale", log.max_energy_gain());
+    else std::printf("no energy to compare (no sample had particles, motion or gravity)");
+  } else
     std::printf("; no csv_interval: penetration and energy were not sampled");
   std::printf("\n");
   for (const auto& f : feeders) {

@@ -104,13 +104,27 @@ inline PairPhysics pair_physics(const Scene& s, int a, int b, bool wall) {
   return p;
 }
 
+// The largest initial speed of any placement or feed (m/s; a feed's particles leave at up to
+// |velocity| + velocity_spread), and (key) the scene key that gives it.
+inline double largest_initial_speed(const Scene& s, std::string* key = nullptr) {
+  double v0 = 0;
+  const auto consider = [&](double v, const char* what, std::size_t k, const char* field) {
+    if (v <= v0) return;
+    v0 = v;
+    if (key) *key = std::string(what) + "[" + std::to_string(k) + "]." + field;
+  };
+  for (std::size_t k = 0; k < s.lattices.size(); ++k) consider(norm(s.lattices[k].velocity), "lattice", k, "velocity");
+  for (std::size_t k = 0; k < s.fills.size(); ++k) consider(norm(s.fills[k].velocity), "fill", k, "velocity");
+  for (std::size_t k = 0; k < s.lists.size(); ++k)
+    for (const auto& v : s.lists[k].velocity) consider(norm(v), "particles", k, "velocities");
+  for (std::size_t k = 0; k < s.feeds.size(); ++k)
+    consider(norm(s.feeds[k].velocity) + s.feeds[k].spread, "feed", k, s.feeds[k].spread > 0 ? "velocity_spread" : "velocity");
+  return v0;
+}
+
 inline double reference_impact_speed(const Scene& s) {
   if (s.max_impact_speed > 0) return s.max_impact_speed;
-  double v0 = 0;
-  for (const auto& l : s.lattices) v0 = std::max(v0, norm(l.velocity));
-  for (const auto& f : s.fills) v0 = std::max(v0, norm(f.velocity));
-  for (const auto& l : s.lists)
-    for (const auto& v : l.velocity) v0 = std::max(v0, norm(v));
+  const double v0 = largest_initial_speed(s);
   const double g = norm(s.gravity);
   const Vec3<double> span = s.domain_hi - s.domain_lo;
   const double height = g > 0 ? std::fabs(dot(span, s.gravity)) / g : 0;

@@ -79,7 +79,9 @@ inline double scene_particles(const Scene& s, RunSize* z = nullptr) {
     const ParticleTypeSpec& t = s.types[static_cast<std::size_t>(f.type)];
     const double r = f.size.smallest(), rho = s.materials[static_cast<std::size_t>(t.material)].density;
     const double lightest = rho * (t.is_sphere() ? 4.0 / 3.0 * 3.14159265358979 * r * r * r : t.volume);
-    double n = (f.end - f.start) * (f.rate > 0 ? f.rate : f.mass_rate / lightest) + 1;
+    // (up to the run's end, and the last insertion's due up to the next: one interval past it)
+    const double span = std::min(f.end, s.end_time + f.interval) - f.start;
+    double n = std::max(0.0, span) * (f.rate > 0 ? f.rate : f.mass_rate / lightest) + 1;
     if (f.count > 0) n = std::min(n, static_cast<double>(f.count));
     consider(n, "feed", k, f.rate > 0 ? "rate" : "mass_rate");
   }

@@ -123,7 +123,8 @@ struct FeedSpec {
   std::string name;               // "[[feed]] #k" unless named
   int type = 0;
   InsertionRegion region;
-  double start = 0, end = 0;      // s
+  double start = 0, end = 0;      // s; end: the feed's end_time, or the run's without one
+  double end_given = 0;           // s, the end_time the scene gave (infinity: none, the feed lasts the run)
   double rate = 0;                // particles/s (0: mass_rate)
   double mass_rate = 0;           // kg/s (0: rate)
   long count = 0;                 // the most particles it inserts (0: no limit)

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -143,7 +144,8 @@ inline SceneIdentity scene_identity(const Scene& s) {
     const auto& d = f.size;
     add(p + "type", s.types[static_cast<std::size_t>(f.type)].name);
     add(p + "region", std::string(to_string(g.kind)) + vec(g.lo) + vec(g.hi) + vec(g.centre) + vec(g.axis) + num(g.radius) + num(g.length));
-    add(p + "times", num(f.start) + " " + num(f.end) + " " + num(f.interval));
+    // the end the scene gave ("run": none, the feed lasts the run, however long a restart makes it)
+    add(p + "times", num(f.start) + " " + (f.end_given < std::numeric_limits<double>::infinity() ? num(f.end_given) : std::string("run")) + " " + num(f.interval));
     add(p + "rate", num(f.rate) + " " + num(f.mass_rate) + " " + std::to_string(f.count));
     add(p + "velocity", vec(f.velocity) + num(f.spread) + (f.random_orientation ? " oriented" : ""));
     std::string classes;
