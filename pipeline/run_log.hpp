@@ -132,8 +132,9 @@ class RunLog {
 
   // One row: the simulation now, reduced where its particles live (Simulation::sample()), and
   // the counters since the last sample.
+  // write = false: the guards and the sums only, no row (a run without csv_interval still checks).
   template <class Sim>
-  void sample(Sim& sim) {
+  void sample(Sim& sim, bool write = true) {
     const auto smp = sim.sample(limit_);
     const Energies& e = smp.energies;
     const ContactEnergy& stored = smp.stored;
@@ -162,19 +163,8 @@ class RunLog {
     }
     if (scale > 0) max_gain_ = std::max(max_gain_, gain / scale), compared_ = true;
 
-    const long vf = smp.vertex_face, ee = smp.edge_edge;
     const PenetrationReport& pen = smp.penetration;
-    out_ << sim.time() << ',' << sim.size() << ',' << sim.removed_count() << ',' << e.translational << ','
-         << e.rotational << ',' << e.potential << ',' << stored.total() << ',' << total << ','
-         << e0_ + work_ + inserted_energy - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
-         << ',' << pen.over << ',' << pen.worst_id << ',' << work_;
-    if (ledger_)
-      for (double d : dissipated_) out_ << ',' << d;
-    if (!loads_.objects.empty())
-      for (const auto& l : sim.world_loads(loads_.objects))
-        out_ << ',' << l.force.x << ',' << l.force.y << ',' << l.force.z << ',' << l.torque.x << ',' << l.torque.y << ',' << l.torque.z;
-    if (feeding_) out_ << ',' << sim.inserted_count() << ',' << sim.inserted_mass();
-    out_ << '\n';
+    if (write) row(sim, smp, total, inserted_energy, removed_energy);
     if (pen.over > 0 && warnings_++ < kMaxWarnings)
       std::printf("warning: t = %.6g s: %ld particles exceeded %.3g%% penetration since the last sample; deepest "
                   "%.3g%% (particle id %d)%s\n",
@@ -188,6 +178,26 @@ class RunLog {
     }
     worst_ = std::max(worst_, pen.worst);
     over_samples_ += pen.over > 0;
+  }
+
+  // The sample's row (its columns: the header above).
+  template <class Sim, class Sample>
+  void row(Sim& sim, const Sample& smp, double total, double inserted_energy, double removed_energy) {
+    const Energies& e = smp.energies;
+    const ContactEnergy& stored = smp.stored;
+    const long vf = smp.vertex_face, ee = smp.edge_edge;
+    const PenetrationReport& pen = smp.penetration;
+    out_ << sim.time() << ',' << sim.size() << ',' << sim.removed_count() << ',' << e.translational << ','
+         << e.rotational << ',' << e.potential << ',' << stored.total() << ',' << total << ','
+         << e0_ + work_ + inserted_energy - total - removed_energy << ',' << vf << ',' << ee << ',' << stored.wall_contacts << ',' << pen.worst
+         << ',' << pen.over << ',' << pen.worst_id << ',' << work_;
+    if (ledger_)
+      for (double d : dissipated_) out_ << ',' << d;
+    if (!loads_.objects.empty())
+      for (const auto& l : sim.world_loads(loads_.objects))
+        out_ << ',' << l.force.x << ',' << l.force.y << ',' << l.force.z << ',' << l.torque.x << ',' << l.torque.y << ',' << l.torque.z;
+    if (feeding_) out_ << ',' << sim.inserted_count() << ',' << sim.inserted_mass();
+    out_ << '\n';
   }
 
   double worst_penetration() const { return worst_; }

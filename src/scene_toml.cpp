@@ -789,6 +789,8 @@ void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
               "random_orientation", "interval", "size", "seed"});
     FeedSpec d;
     d.name = f.string_or("name", item_label("feed", k), "a non-empty name");
+    for (const FeedSpec& other : s.feeds)  // its reports and checkpoint state go by the name
+      if (other.name == d.name && f.has("name")) f.fail(*f.get("name"), "name", "a name no other [[feed]] has (\"" + d.name + "\" is taken)");
     d.type = lookup(f, "type", types, "particle_type");
     const ParticleTypeSpec t = s.types[static_cast<std::size_t>(d.type)];
     d.size = read_size(f, file, t.size());  // polyhedra: bounding radii, the shape scaled to each
@@ -805,7 +807,7 @@ void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
     one_of(f, "rate", "mass_rate", "rate (particles/s) and mass_rate (kg/s)");
     d.rate = f.number_or("rate", 0, {0, 1e12, true, false, "particles/s"});
     d.mass_rate = f.number_or("mass_rate", 0, {0, 1e12, true, false, "kg/s"});
-    d.count = f.integer_or("count", 0, 0, kMaxParticles);
+    d.count = f.integer_or("count", 0, 1, kMaxParticles);  // (0 inside: no limit; a scene leaves the key out for that)
     d.velocity = f.vec3_or("velocity", {0, 0, 0}, speed());
     d.spread = f.number_or("velocity_spread", 0, {0, kMaxSpeed, false, false, "m/s"});
     d.random_orientation = f.boolean_or("random_orientation", true);

@@ -85,6 +85,53 @@ BOOST_AUTO_TEST_CASE(restart_rewrites_the_same_time_series) {
   fs::remove_all(b);
 }
 
+// A run stopped at its end off the CSV schedule and continued to a later end_time (stop 49: the
+// stopped run's last row stayed, which the uninterrupted run never wrote) writes the uninterrupted
+// run's time series; a restart past end_time is refused before any file is touched.
+BOOST_AUTO_TEST_CASE(restart_to_a_later_end_drops_the_stopped_run_s_last_row) {
+  const fs::path a = fs::temp_directory_path() / "blaze_run_later_a", b = fs::temp_directory_path() / "blaze_run_later_b";
+  fs::remove_all(a);
+  fs::remove_all(b);
+  // checkpoints at the same step in both runs (a checkpoint rebuilds the lists: the trajectory
+  // depends on where they are)
+  const std::string common = "run data/scenes/box_fill.toml --quiet --set output.csv_interval=0.002 --set output.vtu_interval=0.01 "
+                             "--set output.checkpoint_interval=0.0251 ";
+  const Result whole = run(common + "--set end_time=0.03 --set output.directory=" + a.string());
+  BOOST_TEST_REQUIRE(whole.status == 0, whole.output);
+  const Result stopped = run(common + "--set end_time=0.0251 --set output.directory=" + b.string());
+  BOOST_TEST_REQUIRE(stopped.status == 0, stopped.output);
+  const std::string before = slurp(b / "timeseries.csv");
+  const Result past = run(common + "--set end_time=0.02 --set output.directory=" + b.string() + " --restart " + (b / "checkpoint.blz").string());
+  BOOST_TEST(past.status == 1);
+  BOOST_TEST(past.output.find("past this run's end_time = 0.02 s") != std::string::npos, past.output);
+  BOOST_TEST(slurp(b / "timeseries.csv") == before);
+  const Result later = run(common + "--set end_time=0.03 --set output.directory=" + b.string() + " --restart " + (b / "checkpoint.blz").string());
+  BOOST_TEST_REQUIRE(later.status == 0, later.output);
+  BOOST_TEST(slurp(a / "timeseries.csv") == slurp(b / "timeseries.csv"));
+  BOOST_TEST(slurp(a / "particles.pvd") == slurp(b / "particles.pvd"));
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
+// Without csv_interval the guards still sample (stop 49: such a run blew up and ended with status
+// 0, every particle gone): a time step far above the critical one stops with status 3.
+BOOST_AUTO_TEST_CASE(guards_sample_without_a_csv) {
+  const fs::path dir = fs::temp_directory_path() / "blaze_run_nocsv";
+  fs::remove_all(dir);
+  for (const char* dt : {"1e-3", "3e-4"}) {
+    const Result r = run(std::string("run data/scenes/box_fill.toml --quiet --set end_time=0.05 --set force_dt=true --set dt=") + dt +
+                         " --set output.csv_interval=0 --set output.vtu_interval=0 --set output.checkpoint_interval=0 "
+                         "--set output.directory=" + dir.string());
+    BOOST_TEST(r.status == 3, dt << ": " << r.output);
+    BOOST_TEST(r.output.find("the energy rose") != std::string::npos, r.output);
+  }
+  const Result fine = run("run data/scenes/box_fill.toml --quiet --set end_time=0.01 --set output.csv_interval=0 --set output.vtu_interval=0 "
+                          "--set output.checkpoint_interval=0 --set output.directory=" + dir.string());
+  BOOST_TEST(fine.status == 0, fine.output);
+  BOOST_TEST(fine.output.find("the guards sampled without rows") != std::string::npos, fine.output);
+  fs::remove_all(dir);
+}
+
 // An output interval of the run's whole length comes at its end, once: a checkpoint_interval equal
 // to end_time writes the checkpoint that make bench-compare restarts from (an interval rounding to
 // the run's step count was taken for "never" from stop 22 to 24), and one just past it writes none.

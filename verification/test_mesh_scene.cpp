@@ -218,6 +218,15 @@ BOOST_AUTO_TEST_CASE(repairs_are_noted_and_bad_meshes_refused) {
   BOOST_TEST((has(msg, "[[mesh]] #1 'floor'") && has(msg, "lies across") && has(msg, "triangle")), msg);
   msg = rejection([&] { build(into); });
   BOOST_TEST((has(msg, "[[mesh]] #1 'floor'") && has(msg, "overlaps by 0.001 m")), msg);
+  // a floor that faces away from the balls over it (flipped, or turned the other way), as a
+  // [[wall]] that does is refused (stop 49: the balls fell through its back), with the way out
+  const std::string flipped = edited("translate = ", "flip = true\ntranslate = ");
+  msg = rejection([&] { build(flipped); });
+  BOOST_TEST((has(msg, "bad.toml:") && has(msg, "[[mesh]] #1: key 'file'") && has(msg, "faces away from the particles over it") &&
+              has(msg, "of 16 looked at") && has(msg, "set flip = false")), msg);
+  msg = rejection([&] { build(edited("degrees = -90", "degrees = 90")); });
+  BOOST_TEST((has(msg, "faces away") && has(msg, "set flip = true")), msg);
+  BOOST_TEST(rejection([&] { build(floor_scene(block)); }) == "(accepted)");
 }
 
 BOOST_AUTO_TEST_CASE(fills_avoid_meshes_and_the_vtu_shows_them) {

@@ -797,6 +797,11 @@ BOOST_AUTO_TEST_CASE(adversarial_feeds_mills_and_overrides_are_named) {
   const Scene given = parse_scene(kBase + feed + "end_time = 0.05\n", "scene.toml");
   BOOST_TEST(given.feeds[0].end == 0.05);
   BOOST_TEST(times(given) != times(run));
+  // count = 0 was taken for "no limit" (undocumented): leave count out for that; names are unique
+  msg = rejection([&] { parse_scene(kBase + feed + "count = 0\n", "scene.toml"); });
+  BOOST_TEST((has(msg, "key 'count' = 0") && has(msg, "[1, ")), msg);
+  msg = rejection([&] { parse_scene(kBase + feed + "name = \"pour\"\n" + feed + "name = \"pour\"\n", "scene.toml"); });
+  BOOST_TEST((has(msg, "[[feed]] #2: key 'name' = \"pour\"") && has(msg, "is taken")), msg);
   // a bare --set key of [output] goes to [output] whether or not the file has it
   const Scene o = parse_scene(kBase, "scene.toml", {"vtu_interval=0.002", "energy_gain_limit=0.1", "checkpoint_interval=0.005"});
   BOOST_TEST(o.output.vtu_interval == 0.002);
@@ -806,4 +811,43 @@ BOOST_AUTO_TEST_CASE(adversarial_feeds_mills_and_overrides_are_named) {
   const std::string mill = "\n[mill]\nmaterial = \"steel\"\ncentre = [0, 0, 0]\naxis = [0, 0, 1]\ndiameter = 0.19\nlength = 0.15\n";
   msg = rejection([&] { parse_scene(kBase + mill, "scene.toml"); });
   BOOST_TEST(has(msg, "scene.toml:" + std::to_string(line_of(kBase + mill, "[mill]")) + ": [mill]: missing key 'rpm' (or omega"), msg);
+  // undercut lifters (face_angle < 0: the faces lean over the shell) are the mill's own faces, not
+  // a user's wall facing away from the charge behind their planes
+  for (const char* angle : {"-30", "-45", "0", "30"}) {
+    const std::string drum = std::string(R"([simulation]
+law = "linear"
+steps_per_contact = 15
+end_time = 0.3
+gravity = [0.0, -9.81, 0.0]
+domain_lo = [-0.2, -0.2, -0.06]
+domain_hi = [0.2, 0.2, 0.06]
+[[material]]
+name = "steel"
+density = 7800
+[[pair]]
+materials = ["steel", "steel"]
+stiffness = 4e5
+restitution = 0.825
+friction = 0.15
+tangential_damping = 1.0
+[[particle_type]]
+name = "ball"
+material = "steel"
+radius = 0.01
+[[lattice]]
+type = "ball"
+origin = [-0.055, -0.08, -0.03]
+count = [6, 3, 3]
+spacing = 0.022
+[mill]
+material = "steel"
+centre = [0.0, 0.0, 0.0]
+axis = [0.0, 0.0, 1.0]
+diameter = 0.3
+length = 0.1
+rpm = 40
+lifters = [{ count = 4, height = 0.03, width = 0.02, face_angle = )") + angle + " }]\n";
+    const Scene d = parse_scene(drum, "drum.toml");
+    BOOST_TEST(rejection([&] { (void)build_particles<double>(d, nullptr); }) == "(accepted)", angle);
+  }
 }

@@ -37,6 +37,11 @@ constexpr double orientation_step_float = 4.8e-7;
 // Ballistic flight: velocity Verlet integrates constant acceleration exactly; what is left is
 // rounding of x + v dt over 1e4 steps.
 constexpr double ballistic_position = 1e-10;
+// A ball falling freely through periodic faces along gravity: the sampled total energy (potential of
+// the unwrapped position) against its start, relative to m |g| L (L the period). Velocity Verlet
+// is exact for a constant force up to rounding of positions ~1 m in double over ~1e4 steps;
+// 1e-9 leaves room, and a wrapped potential misses by 1 at the first crossing.
+constexpr double periodic_fall_energy = 1e-9;
 // Measured convergence order as dt halves: slopes over dt, dt/2, dt/4 of a harmonic contact
 // oscillator, asserted within +-0.1 of the scheme's formal order (the verification issue's band).
 constexpr double convergence_order = 0.1;

@@ -129,6 +129,10 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));  // <= kMaxSteps (validated)
   const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
   const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);
+  // Without a CSV the guards (energy, penetration, removals) still sample, kGuardSamples times a
+  // run, with no row: a blown-up run stops with status 3 as one with a CSV does.
+  constexpr std::uint64_t kGuardSamples = 100;
+  const std::uint64_t guard_every = csv_every ? csv_every : std::max<std::uint64_t>(1, steps / kGuardSamples);
   // On restart, the rows and frames that the stopped run wrote up to its checkpoint stay: those of
   // the checkpoint's own step only where this run writes one there too (on its schedule, or its
   // end), not the stopped run's last row or frame off the schedule (its end), which the run that
@@ -201,7 +205,7 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   // The steps between two events (a row, a frame, a checkpoint, the end) run as one stretch, so
   // the GPU can batch them (Simulation::run).
   const auto next_event = [&](std::uint64_t k) {
-    std::uint64_t next = blaze::next_event(k, steps, {csv_every, vtu_every, checkpoint_every});
+    std::uint64_t next = blaze::next_event(k, steps, {guard_every, vtu_every, checkpoint_every});
     for (const auto& f : feeders) next = std::min(next, f.next_insertion(k + 1));
     // and the progress line now and then: about 1e7 particle-steps apart (~3 s on 2 CPU cores)
     const std::uint64_t chunk = std::clamp<std::uint64_t>(10000000 / std::max<std::uint64_t>(1, static_cast<std::uint64_t>(sim_size)), 1, 10000);
@@ -211,9 +215,10 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
     const bool resumed = k == first && first > 0;  // that sample is in the files already
     const bool write_csv = !resumed && csv_every && (k % csv_every == 0 || k == steps);
     const bool write_vtu = !resumed && vtu_every && (k % vtu_every == 0 || k == steps);
+    const bool guard_only = !resumed && !csv_every && (k % guard_every == 0 || k == steps);
     const auto output_start = std::chrono::steady_clock::now();
-    if (write_csv || write_vtu) {
-      if (write_csv) log.sample(sim);  // the guards: a state that trips one is not a good one
+    if (write_csv || write_vtu || guard_only) {
+      if (write_csv || guard_only) log.sample(sim, write_csv);  // the guards: a state that trips one is not a good one
       sim.keep_state();
     }
     if (write_vtu) {  // in the background; the .pvd names a frame once it is written
@@ -275,13 +280,12 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
   const Index left = sim.size(), removed = sim.removed_count();  // collective over ranks
   std::printf("done: %llu steps, %u particles left, %u removed (left the domain)", static_cast<unsigned long long>(steps),
               static_cast<unsigned>(left), static_cast<unsigned>(removed));
-  if (csv_every) {  // the guards' figures come from the samples
-    std::printf("; deepest penetration %.3g%% of the radius, over %.3g%% in %ld samples; ", 100 * log.worst_penetration(),
-                100 * s.output.penetration_warning, log.samples_over_limit());
-    if (log.energy_compared()) std::printf("largest energy gain %.3g of the scale", log.max_energy_gain());
-    else std::printf("no energy to compare (no sample had particles, motion or gravity)");
-  } else
-    std::printf("; no csv_interval: penetration and energy were not sampled");
+  // the guards' figures come from the samples (without csv_interval: the guards' own, no rows)
+  std::printf("; deepest penetration %.3g%% of the radius, over %.3g%% in %ld samples%s; ", 100 * log.worst_penetration(),
+              100 * s.output.penetration_warning, log.samples_over_limit(),
+              csv_every ? "" : " (no csv_interval: the guards sampled without rows)");
+  if (log.energy_compared()) std::printf("largest energy gain %.3g of the scale", log.max_energy_gain());
+  else std::printf("no energy to compare (no sample had particles, motion or gravity)");
   std::printf("\n");
   for (const auto& f : feeders) {
     std::printf("feed %s: %ld particles inserted (%.4g kg)", f.spec().name.c_str(), f.inserted(), f.inserted_mass());

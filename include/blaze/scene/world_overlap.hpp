@@ -62,6 +62,7 @@ class WorldOverlapCheck {
         for (int a = 0; a < 3; ++a) mesh_corners_.back().push_back(m.corner(t, a));
       mesh_names_.push_back("[[mesh]] #" + std::to_string(k + 1) + " '" + s.meshes[k].name + "' (" + s.place("mesh[" + std::to_string(k) + "].file") + ")");
     }
+    mesh_facing_.assign(s.meshes.size(), MeshFacing{});
     // (the views point into the vectors above: moving the check keeps them, copying would not)
     for (std::size_t k = 0; k < mesh_bins_.size(); ++k) {
       const MeshBinsHost& b = mesh_bins_[k];
@@ -95,6 +96,7 @@ class WorldOverlapCheck {
     for (std::size_t k = 0; k < polygons_.size(); ++k) check_polygon(k, x, r, vertices, who);
     for (std::size_t k = 0; k < cylinders_.size(); ++k) check_cylinder(k, x, r, vertices, who);
     for (std::size_t k = 0; k < mesh_bins_.size(); ++k) {
+      look_down(k, x);
       const WorldBlockView::MeshTouch t = view().mesh_touch(static_cast<int>(k), x, r);
       if (t.triangle < 0) continue;
       const std::string at = " at its triangle " + std::to_string(s_.meshes[k].mesh.file_index[static_cast<std::size_t>(t.triangle)]) + " (in the file)";
@@ -153,6 +155,18 @@ class WorldOverlapCheck {
                          " by the right-hand rule of its vertex order, gravity draws them to its back, the side it does "
                          "not act on); list its vertices in the opposite order");
     }
+    for (std::size_t k = 0; k < mesh_facing_.size(); ++k) {
+      const MeshFacing& f = mesh_facing_[k];
+      if (f.behind > 0 && f.front == 0) {
+        const TriangleMesh& m = s_.meshes[k].mesh;
+        throw SceneError(s_.place("mesh[" + std::to_string(k) + "].file") + ": the mesh '" + s_.meshes[k].name + "' faces away from the particles over it: of " +
+                         std::to_string(f.looked) + " looked at, the " + std::to_string(f.behind) +
+                         " that gravity draws onto it meet its back first (the side it does not act on; triangle " +
+                         std::to_string(m.file_index[static_cast<std::size_t>(f.example)]) + " in the file, normal " +
+                         vec_text(f.normal) + " by the right-hand rule of its vertex order; a file's stored normals are ignored): "
+                         "set flip = " + (s_.meshes[k].flip ? "false" : "true") + " or reverse the file's vertex order");
+      }
+    }
   }
 
  private:
@@ -193,6 +207,49 @@ class WorldOverlapCheck {
     }
   }
 
+  // A mesh faces away when the particles that gravity draws onto it meet its back: from centre x,
+  // along g, the first triangle the ray crosses (Moller-Trumbore, every triangle: the first
+  // kFacingLooks particles only), front (its normal against g) or back. Kept per mesh for finish().
+  static constexpr long kFacingLooks = 256;
+  struct MeshFacing {
+    long looked = 0, front = 0, behind = 0;
+    long example = -1;  // a triangle met from behind
+    Vec3<double> normal{0, 0, 0};
+  };
+  void look_down(std::size_t k, const Vec3<double>& x) {
+    MeshFacing& f = mesh_facing_[k];
+    const double g = norm(s_.gravity);
+    if (!(g > 0) || f.looked >= kFacingLooks) return;
+    ++f.looked;
+    const Vec3<double> d = s_.gravity * (1 / g);
+    const TriangleMesh& m = s_.meshes[k].mesh;
+    double nearest = INFINITY;
+    long hit = -1;
+    for (std::size_t t = 0; t < m.size(); ++t) {
+      const Vec3<double> a = m.corner(t, 0), e1 = m.corner(t, 1) - a, e2 = m.corner(t, 2) - a;
+      const Vec3<double> p = cross(d, e2);
+      const double det = dot(e1, p);
+      if (std::fabs(det) < 1e-300) continue;  // the ray runs in its plane
+      const Vec3<double> q = x - a;
+      const double u = dot(q, p) / det;
+      if (u < 0 || u > 1) continue;
+      const Vec3<double> qe = cross(q, e1);
+      const double v = dot(d, qe) / det;
+      if (v < 0 || u + v > 1) continue;
+      const double along = dot(e2, qe) / det;
+      if (along > 0 && along < nearest) nearest = along, hit = static_cast<long>(t);
+    }
+    if (hit < 0) return;
+    const std::size_t t = static_cast<std::size_t>(hit);
+    const Vec3<double> n = cross(m.corner(t, 1) - m.corner(t, 0), m.corner(t, 2) - m.corner(t, 0));
+    if (dot(n, d) < 0) {
+      ++f.front;
+    } else {
+      ++f.behind;
+      if (f.example < 0) f.example = hit, f.normal = n * (1 / norm(n));
+    }
+  }
+
   void check_cylinder(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
                       const std::string& who) const {
     const Cylinder<double>& c = cylinders_[k];
@@ -228,6 +285,7 @@ class WorldOverlapCheck {
   std::vector<std::vector<Vec3<double>>> mesh_corners_;  // per mesh: 3 a triangle
   std::vector<MeshBlockView> mesh_views_;
   std::vector<long> front_, behind_;
+  std::vector<MeshFacing> mesh_facing_;
 };
 
 }  // namespace blaze
