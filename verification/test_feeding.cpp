@@ -699,8 +699,8 @@ BOOST_AUTO_TEST_CASE(bad_feeds_are_refused_by_name) {
     for (const char* p : parts) BOOST_TEST(msg.find(p) != std::string::npos, "message '" << msg << "' lacks '" << p << "'");
   };
   const std::string region = kBoxRegion;
-  refused("type = \"bead\"\n" + region, {"bad.toml:", "[[feed]] #1", "'rate'", "exactly one"});
-  refused("type = \"bead\"\nrate = 10\nmass_rate = 1\n" + region, {"[[feed]] #1", "exactly one"});
+  refused("type = \"bead\"\n" + region, {"bad.toml:", "[[feed]] #1", "missing key 'rate' (or mass_rate"});
+  refused("type = \"bead\"\nrate = 10\nmass_rate = 1\n" + region, {"[[feed]] #1", "key 'mass_rate' = 1", "not both"});
   refused("type = \"bead\"\nrate = -1\n" + region, {"[[feed]] #1", "key 'rate'"});
   refused("type = \"grain\"\nrate = 10\n" + region, {"[[feed]] #1", "key 'type'"});
   refused("type = \"bead\"\nrate = 10", {"[[feed]] #1", "missing key 'region'"});
