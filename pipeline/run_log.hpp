@@ -118,15 +118,26 @@ class RunLog {
         at += used + 1;  // past the comma
       }
     }
+    // the run so far's guard summary (absent before it was saved: the restarted part only)
+    const auto g = saved.find(" gain=");
+    if (g != std::string::npos) {
+      int compared = 0;
+      if (std::sscanf(saved.c_str() + g, " gain=%lf compared=%d worst=%lf over=%ld", &max_gain_, &compared, &worst_, &over_samples_) != 4)
+        throw std::runtime_error("checkpoint: its run text's guard summary is malformed");
+      compared_ = compared != 0;
+    }
     if (saved.find(kEnergyParts) == std::string::npos)
       throw std::runtime_error("checkpoint: its E(0) leaves out the elastic energy of the contacts (written before "
                                "elastic_J was part of total_J); rerun from the start");
     started_ = true;
   }
   std::string save() const {
-    char buf[400];
-    std::snprintf(buf, sizeof buf, "e0=%.17g scale=%.17g work=%.17g %s dissipated=%.17g,%.17g,%.17g,%.17g,%.17g", e0_, scale_,
-                  work_, kEnergyParts, dissipated_[0], dissipated_[1], dissipated_[2], dissipated_[3], dissipated_[4]);
+    char buf[600];
+    std::snprintf(buf, sizeof buf,
+                  "e0=%.17g scale=%.17g work=%.17g %s dissipated=%.17g,%.17g,%.17g,%.17g,%.17g gain=%.17g compared=%d "
+                  "worst=%.17g over=%ld",
+                  e0_, scale_, work_, kEnergyParts, dissipated_[0], dissipated_[1], dissipated_[2], dissipated_[3], dissipated_[4],
+                  max_gain_, compared_ ? 1 : 0, worst_, over_samples_);
     return buf;
   }
 

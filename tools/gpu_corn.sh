@@ -6,6 +6,12 @@
 # them bitwise. The runs live in build/corn (kept between calls like any build output). Every call
 # returns the runs' logs and time series (no frames) in $OUT/corn.tgz; the call in which all have
 # ended also returns studies/hopper/corn.md, summary.csv and plots/fig-2.17.png.
+# The study (~30 min of an H100 for the twelve) outlasts a session's device time, so every call
+# also returns the runs' whole state but the frames (checkpoints, logs, time series, .pvd) as
+# $OUT/corn-state.tgz.00, .01, ... (15 MiB parts); put them in build/corn-carry/ here
+# (`mkdir -p build/corn-carry && cp FILES_AT/corn-state.tgz.* build/corn-carry/`) and carry that
+# folder in a later session's call: a machine without build/corn unpacks it and continues the runs
+# from their checkpoints (a run finished before keeps its results and its checkpoint is dropped).
 # Usage: tools/gpu_corn.sh [STOP]        (JOBS=N: side by side, default 12; CORN_SEEDS as in
 #   corn_arching.sh; CORN_PREBUILT=1 runs a carried build/cuda/study_hopper without make)
 set -uo pipefail
@@ -21,6 +27,10 @@ else
   make -j"$(nproc)" build/cuda/study_hopper > "$out/build.log" 2>&1 || { tail -30 "$out/build.log"; exit 1; }
 fi
 echo "study_hopper ready: $(( $(date +%s) - T0 )) s"
+# a fresh machine: the state an earlier session's calls returned, carried back in build/corn-carry
+if ! [ -d build/corn ] && ls build/corn-carry/corn-state.tgz.* > /dev/null 2>&1; then
+  cat build/corn-carry/corn-state.tgz.* | tar xzf - && echo "build/corn: unpacked from build/corn-carry ($(ls build/corn/*.stopped 2> /dev/null | wc -l) runs to continue)"
+fi
 nvidia-cuda-mps-control -d 2> /dev/null
 stop=${1:-500}
 stop=$(( stop - ($(date +%s) - T0) )); [ "$stop" -ge 30 ] || stop=30
@@ -30,6 +40,10 @@ status=$?
 echo "corn_arching: status $status after $(( $(date +%s) - T0 )) s"
 for f in build/corn/W*_s*.log; do echo "$f: $(grep -a "^pace:" "$f" | tail -1)"; done
 tar czf "$out/corn.tgz" --exclude='*.vtu' --exclude='*.blz' --exclude='*.pvd' build/corn
+# the state to continue from in a later session: a finished run's checkpoint is not needed
+for c in build/corn/W*_s*/; do [ -e "${c%/}.stopped" ] || rm -f "$c/checkpoint.blz"; done
+tar czf - --exclude='*.vtu' build/corn | split -b 15M -d - "$out/corn-state.tgz."
+ls -la "$out"/corn-state.tgz.*
 # no gnuplot there: the summary (corn.md) is written before the plot fails; CORN_RUN=0 redoes both here
 [ -e build/corn/summary.csv ] && cp studies/hopper/corn.md build/corn/summary*.csv "$out/"
 cp plots/fig-2.17.png "$out/" 2> /dev/null

@@ -41,6 +41,8 @@ inline const char* to_string(SizeKind k) {
 }
 
 struct SizeDistribution {
+  // The narrowest spread a continuous kind may have, relative to its size (validate()).
+  static constexpr double kMinRelativeSpread = 1e-9;
   SizeKind kind = SizeKind::constant;
   bool by_mass = false;
   double radius = 0;                    // m, constant
@@ -108,6 +110,15 @@ struct SizeDistribution {
     need(min > 0 && max > min && std::isfinite(max), "min and max must satisfy 0 < min < max (m)");
     if (kind == SizeKind::normal) need(deviation > 0, "deviation must be > 0 m");
     if (kind == SizeKind::lognormal) need(mean > 0 && deviation > 0, "median must be > 0 m and sigma > 0");
+    // A spread below kMinRelativeSpread of the size is one size: double resolves the draws and
+    // the CDF no better than ~1e-13 of it (the Kolmogorov-Smirnov check then reports up to 0.5
+    // for a distribution delivered exactly), and no feeder needs sizes closer than that.
+    const std::string one_size = ": sizes closer than that are one size (leave size out for the type's radius, or "
+                                 "give kind = \"classes\" with one radius)";
+    need(max - min >= kMinRelativeSpread * max, "max - min must be >= 1e-9 x max" + one_size);
+    if (kind == SizeKind::normal)
+      need(deviation >= kMinRelativeSpread * std::fabs(mean), "deviation must be >= 1e-9 x mean" + one_size);
+    if (kind == SizeKind::lognormal) need(deviation >= kMinRelativeSpread, "sigma must be >= 1e-9" + one_size);
     if (kind == SizeKind::rosin_rammler) need(scale > 0 && shape > 0, "r63 must be > 0 m and k > 0");
     // a range the distribution barely reaches would make the rejection draws loop for ever
     need(raw_cdf(max) - raw_cdf(min) >= 1e-6, "[min, max] holds less than 1e-6 of the distribution");
