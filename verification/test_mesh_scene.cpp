@@ -227,6 +227,25 @@ BOOST_AUTO_TEST_CASE(repairs_are_noted_and_bad_meshes_refused) {
   msg = rejection([&] { build(edited("degrees = -90", "degrees = 90")); });
   BOOST_TEST((has(msg, "faces away") && has(msg, "set flip = true")), msg);
   BOOST_TEST(rejection([&] { build(floor_scene(block)); }) == "(accepted)");
+  // the same with no particle at the start, only a feed over the floor (stop 50: a scene of feeds
+  // alone was never looked at): its region's centres are
+  const auto fed = [](std::string text) {
+    const std::string lattice = text.substr(text.find("[[lattice]]"), text.find("spacing = 0.02\n") + 15 - text.find("[[lattice]]"));
+    text.replace(text.find(lattice), lattice.size(), "");
+    return text + "[[feed]]\ntype = \"bead\"\nregion = { kind = \"box\", lo = [-0.05, 0.05, -0.05], hi = [0.05, 0.1, 0.05] }\nrate = 1000\n";
+  };
+  BOOST_TEST_REQUIRE(fed(flipped).find("[[lattice]]") == std::string::npos);
+  msg = rejection([&] { build(fed(flipped)); });
+  BOOST_TEST((has(msg, "faces away from the particles over it") && has(msg, "of 64 looked at") && has(msg, "set flip = false")), msg);
+  BOOST_TEST(rejection([&] { build(fed(floor_scene(block))); }) == "(accepted)");
+  // and a [[wall]] floor facing away from a feed
+  const std::string wall_fed = fed(floor_scene(kWallFloor));
+  BOOST_TEST(rejection([&] { build(wall_fed); }) == "(accepted)");
+  std::string turned = wall_fed;
+  const std::string up = "[[-0.08, 0, -0.08], [-0.08, 0, 0.08], [0.08, 0, 0.08], [0.08, 0, -0.08]]";
+  turned.replace(turned.find(up), up.size(), "[[0.08, 0, -0.08], [0.08, 0, 0.08], [-0.08, 0, 0.08], [-0.08, 0, -0.08]]");
+  msg = rejection([&] { build(turned); });
+  BOOST_TEST((has(msg, "[[wall]] #1: key 'vertices'") && has(msg, "faces away from the 64 particles over it")), msg);
 }
 
 BOOST_AUTO_TEST_CASE(fills_avoid_meshes_and_the_vtu_shows_them) {

@@ -237,6 +237,7 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
       add(f.type, x, f.velocity, true, name);
     }
   }
+  for (const FeedSpec& f : s.feeds) world.look_from_region(f.region, f.size.largest());
   world.finish();
   return out;
 }

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <string>
 #include <vector>
+#include "blaze/core/counter_random.hpp"
 #include "blaze/scene/scene.hpp"
 #include "blaze/scene/world_block.hpp"
 #include "blaze/world/cylinder.hpp"
@@ -142,6 +143,22 @@ class WorldOverlapCheck {
     return false;
   }
 
+  // A feed's region as the particles it will place (stop 50: a scene of feeds alone was never
+  // looked at): kRegionLooks centres drawn in it, counted over the walls and meshes as placed
+  // particles are, so that finish() refuses a wall or mesh facing away from what falls onto it.
+  void look_from_region(const InsertionRegion& region, double r) {
+    CounterEngine rng(0x5eed, 0);
+    for (int i = 0; i < kRegionLooks; ++i) {
+      const Vec3<double> x = region.draw(rng, r);
+      for (std::size_t k = 0; k < polygons_.size(); ++k) {
+        const PlanarPolygon<double>& w = polygons_[k];
+        const double d = dot(x - w.centroid, w.normal);
+        if (w.contains(x - d * w.normal)) (d > 0 ? front_[k] : behind_[k]) += 1;
+      }
+      for (std::size_t k = 0; k < mesh_facing_.size(); ++k) look_down(k, x);
+    }
+  }
+
   // After every particle: walls that face away from all the particles over them. Not the [mill]'s
   // own faces, oriented by construction: an undercut lifter's face (face_angle < 0) looks down at
   // the shell, with the charge behind its plane and none over its front.
@@ -211,6 +228,7 @@ class WorldOverlapCheck {
   // along g, the first triangle the ray crosses (Moller-Trumbore, every triangle: the first
   // kFacingLooks particles only), front (its normal against g) or back. Kept per mesh for finish().
   static constexpr long kFacingLooks = 256;
+  static constexpr int kRegionLooks = 64;  // centres drawn in a feed's region (look_from_region)
   struct MeshFacing {
     long looked = 0, front = 0, behind = 0;
     long example = -1;  // a triangle met from behind
