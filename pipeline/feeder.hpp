@@ -16,7 +16,8 @@
 // core/counter_random.hpp, so any number of threads gives the same result), up to kDrawsPerRound
 // until one is clear of what is there: of the particles present (the simulation's particles near
 // the region: Simulation::spheres_in_box) and placed in earlier rounds, of the world
-// (WorldOverlapCheck's test, as fills are: the world at its initial pose) and inside the domain.
+// (WorldOverlapCheck's test, as fills are, with moving objects where they are now) and inside the
+// domain.
 // That centre is kept when it also overlaps no candidate of the same round before it that passed
 // those tests. The rounds run where the particles live (kernels/placement.hpp: on the GPU for a
 // GPU run, on all host threads otherwise); after kTries rounds the particles still open stay due
@@ -109,6 +110,7 @@ class Feeder {
     SphereCellsView occupied = lay_cells(d.head, d.next, d.sphere, capacity, lo - margin, reach, r_max);
     for_each(Space{}, present, PutFound<Real>{occupied, d.found.data(), 0});
     if (!d.world) d.world.emplace(world_);
+    d.world->at_time(s_, static_cast<double>(sim.steps()) * s_.dt);  // (a moving world: where it is now)
     copy_in(d.radius, pending_.data(), want);
     const int due = static_cast<int>(want);
     d.placed.ensure(want), d.centre.ensure(3 * want), d.ok.ensure(want);

@@ -1,5 +1,5 @@
-// The arrays a WorldBlockView reads (blaze/scene/world_block.hpp: the initial world's test of a
-// sphere), copied from a WorldOverlapCheck to a memory space: a feeder's rounds test their draws
+// The arrays a WorldBlockView reads (blaze/scene/world_block.hpp: the world's test of a sphere,
+// at its initial pose or, after at_time(), at its pose then), copied from a WorldOverlapCheck to a memory space: a feeder's rounds test their draws
 // where the particles live (pipeline/feeder.hpp, kernels/placement.hpp). Move-only; the view
 // points into its buffers.
 #pragma once
@@ -36,6 +36,22 @@ class WorldBlockArrays {
   }
   const WorldBlockView& view() const { return view_; }
 
+  // The world as it stands at time t (s) of a scene whose objects move or are removed (the view's
+  // poses; a still world keeps none: its reference geometry is where it is).
+  void at_time(const Scene& s, double t) {
+    std::vector<const Motion*> motions;
+    for (const auto& w : s.walls) motions.push_back(&w.motion);
+    for (const auto& c : s.cylinders) motions.push_back(&c.motion);
+    for (const auto& m : s.meshes) motions.push_back(&m.motion);
+    bool still = true;
+    for (const Motion* m : motions) still = still && m->is_static();
+    if (still) return;
+    std::vector<Pose<double>> poses;
+    for (const Motion* m : motions) poses.push_back(pose_at<double>(*m, t));
+    copy_in(poses_, poses);
+    view_.pose = poses_.data();
+  }
+
  private:
   Buffer<Cylinder<double>, Space> cylinders_;
   Buffer<PlanarPolygon<double>, Space> polygons_;
@@ -43,6 +59,7 @@ class WorldBlockArrays {
   std::vector<Buffer<int, Space>> starts_, entries_;
   std::vector<Buffer<Vec3<double>, Space>> corners_;
   Buffer<MeshBlockView, Space> meshes_;
+  Buffer<Pose<double>, Space> poses_;
   WorldBlockView view_;
 };
 

@@ -339,6 +339,41 @@ BOOST_AUTO_TEST_CASE(feeds_meet_their_rate_without_overlaps) {
   }
 }
 
+// A feed into a moving world places against the world where it is now (stop 50: the world at its
+// initial pose was tested, so particles were put across a wall that had moved into the region, as
+// a lifter turns into a mill's feed): a plate rising at 0.5 m/s from y = 0.05 m, through the
+// region (y 0.12-0.18 m) by the insertions at 0.14-0.26 s, has no particle across it or within a
+// radius above it; one removed at 0.2 s refuses nothing from then on.
+BOOST_AUTO_TEST_CASE(feeds_place_against_moving_walls_where_they_are) {
+  using Run = FeedRun<SphereShape, LinearLaw<double>>;
+  for (const char* removal : {"", "remove_time = 0.2\n"}) {
+    const std::string plate = std::string("[[wall]]\nmaterial = \"glass\"\nrim = false\n") + removal +
+                              "vertices = [[-0.04, 0.05, -0.04], [-0.04, 0.05, 0.04], [0.04, 0.05, 0.04], [0.04, 0.05, -0.04]]\n"
+                              "motion = { kind = \"translation\", velocity = [0, 0.5, 0] }\n";
+    const Scene s = parse_scene(feed_scene(std::string("type = \"bead\"\nrate = 4000\nstart_time = 0.14\nend_time = 0.26\n") + kBoxRegion) +
+                                    plate,
+                                "feed.toml");
+    Run run(s);
+    const double r = 2.5e-3;
+    long across = 0, placed = 0, above_reach = 0;
+    run.run(static_cast<std::uint64_t>(std::llround(0.27 / s.dt)), [&](const Feeder<double>&, Index before) {
+      const double t = run.sim->time(), plate_y = 0.05 + 0.5 * t;
+      const auto& st = run.sim->state();
+      for (std::size_t i = 0; i < st.size(); ++i) {
+        if (st.id[i] < before) continue;
+        ++placed;
+        const double d = static_cast<double>(st.position[i].y) - plate_y;
+        const bool gone = *removal && t >= 0.2 - 0.5 * s.dt;
+        if (!gone && d > -r && d < r - 1e-9) ++across;
+        if (gone && std::fabs(d) < r) ++above_reach;  // the removed plate's place: free again
+      }
+    });
+    BOOST_TEST_REQUIRE(placed > 100);
+    BOOST_TEST(across == 0, (*removal ? "removed at 0.2 s: " : "") << across << " of " << placed << " placed across the plate or within r of it");
+    if (*removal) BOOST_TEST(above_reach > 0, "nothing placed where the removed plate was");
+  }
+}
+
 BOOST_AUTO_TEST_CASE(cubes_are_fed_turned_and_apart) {
   using Run = FeedRun<PolyhedronShape<double>, LinearLaw<double>>;
   const Scene s = parse_scene(feed_scene(std::string("type = \"cube\"\nrate = 1500\nend_time = 0.1\n") + kBoxRegion, "", "",

@@ -11,12 +11,17 @@
 //   mesh:               a triangle of the bin holding x that x lies over and behind by less than
 //                       r, or whose nearest point is nearer than r - slack.
 // Touching is allowed: an overlap up to `slack` is not one.
+// A moving world (issue 19's motions; a feed into a turning mill) is tested at its pose now: with
+// `pose` set (one per object: polygons, then cylinders, then meshes, as the world orders them) x
+// is taken into each object's reference frame, x_ref = R^T (x - shift), and tested against the
+// reference geometry (the object at t = 0); a removed object (pose inactive) refuses nothing.
 #pragma once
 #include <cmath>
 #include <cstdint>
 #include "blaze/config.hpp"
 #include "blaze/world/cylinder.hpp"
 #include "blaze/world/mesh_bins.hpp"
+#include "blaze/world/motion.hpp"
 #include "blaze/world/planar_polygon.hpp"
 
 namespace blaze {
@@ -36,6 +41,7 @@ struct WorldBlockView {
   const MeshBlockView* mesh = nullptr;
   int meshes = 0;
   double slack = 0;  // m
+  const Pose<double>* pose = nullptr;  // per object, the pose now (null: the world at t = 0)
 
   // The triangle of mesh k nearest x within r - slack (or across it within r), or none.
   struct MeshTouch {
@@ -81,15 +87,26 @@ struct WorldBlockView {
     return best;
   }
 
-  BLAZE_HD bool blocked(const Vec3<double>& x, double r) const {
+  // x in object o's reference frame; false when the object is gone (removed).
+  BLAZE_HD bool local(int o, const Vec3<double>& x, Vec3<double>& out) const {
+    if (!pose) return out = x, true;
+    if (!pose[o].active) return false;
+    out = pose[o].to_reference(x);
+    return true;
+  }
+
+  BLAZE_HD bool blocked(const Vec3<double>& x_world, double r) const {
+    Vec3<double> x;
     // The drums first: one test each, and they refuse every draw outside the shell.
     for (int k = 0; k < cylinders; ++k) {
+      if (!local(polygons + k, x_world, x)) continue;
       const Cylinder<double>& c = cylinder[k];
       const double s = dot(x - c.origin, c.axis);
       if (!(s >= 0 && s <= c.length)) continue;
       if (norm(x - c.origin - s * c.axis) + r > c.radius + slack) return true;
     }
     for (int k = 0; k < polygons; ++k) {
+      if (!local(k, x_world, x)) continue;
       const PlanarPolygon<double>& w = polygon[k];
       const double d = dot(x - w.centroid, w.normal);
       // In front and beyond bound + 2 r of the centroid: no point of the polygon is within r of x
@@ -103,7 +120,7 @@ struct WorldBlockView {
       if (!over && ::fabs(d) < r && rim_distance(w, x) < r - slack) return true;
     }
     for (int k = 0; k < meshes; ++k)
-      if (mesh_touch(k, x, r).triangle >= 0) return true;
+      if (local(polygons + cylinders + k, x_world, x) && mesh_touch(k, x, r).triangle >= 0) return true;
     return false;
   }
 };
