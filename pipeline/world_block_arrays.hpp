@@ -1,7 +1,7 @@
 // The arrays a WorldBlockView reads (blaze/scene/world_block.hpp: the world's test of a sphere,
-// at its initial pose or, after at_time(), at its pose then), copied from a WorldOverlapCheck to a memory space: a feeder's rounds test their draws
-// where the particles live (pipeline/feeder.hpp, kernels/placement.hpp). Move-only; the view
-// points into its buffers.
+// at its initial pose or, after at_time(), at its pose then), copied from a WorldOverlapCheck to
+// a memory space: a feeder's rounds test their draws where the particles live
+// (pipeline/feeder.hpp, kernels/placement.hpp). Move-only; the view points into its buffers.
 #pragma once
 #include <cstddef>
 #include <vector>
