@@ -44,6 +44,11 @@ tar czf "$out/corn.tgz" --exclude='*.vtu' --exclude='*.blz' --exclude='*.pvd' bu
 for c in build/corn/W*_s*/; do [ -e "${c%/}.stopped" ] || rm -f "$c/checkpoint.blz"; done
 tar czf - --exclude='*.vtu' build/corn | split -b 15M -d - "$out/corn-state.tgz."
 ls -la "$out"/corn-state.tgz.*
+# what comes back is at most 64 MiB in 8 files (the device README), and what is carried back at
+# most 64 MiB with the tree: a checkpoint of a settled run is ~10 MB (13 824 polyhedra in double
+# with their contacts), so twelve may not fit; then run fewer at a time (CORN_SEEDS="1" JOBS=4)
+state=$(cat "$out"/corn-state.tgz.* | wc -c)
+[ "$state" -lt 40000000 ] || echo "corn: WARNING: the runs' state is $state bytes: it may not come back or be carried whole; run fewer at a time"
 # no gnuplot there: the summary (corn.md) is written before the plot fails; CORN_RUN=0 redoes both here
 [ -e build/corn/summary.csv ] && cp studies/hopper/corn.md build/corn/summary*.csv "$out/"
 cp plots/fig-2.17.png "$out/" 2> /dev/null
