@@ -372,6 +372,30 @@ BOOST_AUTO_TEST_CASE(feeds_place_against_moving_walls_where_they_are) {
     BOOST_TEST(across == 0, (*removal ? "removed at 0.2 s: " : "") << across << " of " << placed << " placed across the plate or within r of it");
     if (*removal) BOOST_TEST(above_reach > 0, "nothing placed where the removed plate was");
   }
+  // A paddle turning about y at 2 pi rad/s through the region (50-94 degrees from where it
+  // started over the insertions): nothing placed within r of its plane over its outline.
+  const std::string paddle = "[[wall]]\nmaterial = \"glass\"\nrim = false\n"
+                             "vertices = [[0, 0.11, -0.03], [0, 0.19, -0.03], [0, 0.19, 0.03], [0, 0.11, 0.03]]\n"
+                             "motion = { kind = \"rotation\", axis = [0, 1, 0], point = [0, 0, 0], omega = 6.283185307179586 }\n";
+  const Scene s = parse_scene(feed_scene(std::string("type = \"bead\"\nrate = 4000\nstart_time = 0.14\nend_time = 0.26\n") + kBoxRegion) + paddle,
+                              "feed.toml");
+  Run run(s);
+  const double r = 2.5e-3;
+  long near = 0, placed = 0;
+  run.run(static_cast<std::uint64_t>(std::llround(0.27 / s.dt)), [&](const Feeder<double>&, Index before) {
+    const double a = 2 * M_PI * run.sim->time();
+    const Vec3<double> n{std::cos(a), 0, -std::sin(a)}, along{std::sin(a), 0, std::cos(a)};  // e_x, e_z turned about y
+    const auto& st = run.sim->state();
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      if (st.id[i] < before) continue;
+      ++placed;
+      const Vec3<double> x = vec_cast<double>(st.position[i]);
+      const bool over = std::fabs(dot(x, along)) <= 0.03 && x.y >= 0.11 && x.y <= 0.19;
+      if (over && std::fabs(dot(x, n)) < r - 1e-9) ++near;
+    }
+  });
+  BOOST_TEST_REQUIRE(placed > 100);
+  BOOST_TEST(near == 0, near << " of " << placed << " placed within r of the turning paddle");
 }
 
 BOOST_AUTO_TEST_CASE(cubes_are_fed_turned_and_apart) {
