@@ -364,7 +364,7 @@ BOOST_AUTO_TEST_CASE(feeds_place_against_moving_walls_where_they_are) {
         ++placed;
         const double d = static_cast<double>(st.position[i].y) - plate_y;
         const bool gone = *removal && t >= 0.2 - 0.5 * s.dt;
-        if (!gone && d > -r && d < r - 1e-9) ++across;
+        if (!gone && d > -r && d < r - tol::feed_wall_clearance) ++across;
         if (gone && std::fabs(d) < r) ++above_reach;  // the removed plate's place: free again
       }
     });
@@ -391,7 +391,7 @@ BOOST_AUTO_TEST_CASE(feeds_place_against_moving_walls_where_they_are) {
       ++placed;
       const Vec3<double> x = vec_cast<double>(st.position[i]);
       const bool over = std::fabs(dot(x, along)) <= 0.03 && x.y >= 0.11 && x.y <= 0.19;
-      if (over && std::fabs(dot(x, n)) < r - 1e-9) ++near;
+      if (over && std::fabs(dot(x, n)) < r - tol::feed_wall_clearance) ++near;
     }
   });
   BOOST_TEST_REQUIRE(placed > 100);

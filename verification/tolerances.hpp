@@ -664,4 +664,10 @@ constexpr double periodic_pair_over_radius = 1e-9;
 // boundary changes it at the first collision there (~1e-2).
 constexpr double periodic_momentum = 1e-12;
 
+// A fed particle's clearance from a moving wall at insertion (m): the placement allows touching
+// up to its slack, 1e-9 of the largest particle size (~2.5e-12 m for the 2.5 mm beads), and the
+// test recomputes the wall's pose in double from t; 1e-9 m covers both, far below a particle
+// placed across the wall (overlaps of ~1e-3 m without the moving-world test).
+constexpr double feed_wall_clearance = 1e-9;
+
 }  // namespace blaze::tol
