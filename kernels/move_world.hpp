@@ -21,31 +21,23 @@ struct MoveWorld {
   BLAZE_HD void operator()(Index i) const {
     const int objects = w.polygon_count + w.cylinder_count + w.mesh_count;
     for (long o = i; o < objects; o += n) {
-      // Everything the object needs is read before anything is written (the reads overlap: this
-      // phase is one thread's chain of latencies per object).
       const std::uint64_t s = w.step[o] + 1;
       const Motion m = w.motion[o];
-      if (o < w.polygon_count) {
-        const PlanarPolygon<Real> ref = w.polygon_ref[o];
-        const Pose<Real> p = place(o, s, m);
-        w.polygons[o] = moved(ref, p);
-      } else if (o < w.polygon_count + w.cylinder_count) {
-        const Cylinder<Real> ref = w.cylinder_ref[o - w.polygon_count];
-        const Pose<Real> p = place(o, s, m);
-        w.cylinders[o - w.polygon_count] = moved(ref, p);
-      } else {
-        place(o, s, m);
-      }
+      // The reference geometry is read first (its load overlaps the pose's arithmetic), and the
+      // pose is formed once, before the object's kind branches: a warp whose threads hold both
+      // polygons and cylinders took the branches in turn, forming the pose (double-precision
+      // sine and cosine: most of this phase's chain) twice.
+      const bool polygon = o < w.polygon_count, cylinder = !polygon && o < w.polygon_count + w.cylinder_count;
+      PlanarPolygon<Real> polygon_ref;
+      Cylinder<Real> cylinder_ref;
+      if (polygon) polygon_ref = w.polygon_ref[o];
+      else if (cylinder) cylinder_ref = w.cylinder_ref[o - w.polygon_count];
+      const Pose<Real> p = pose_at<Real>(m, static_cast<double>(s) * w.dt);
+      if (polygon) w.polygons[o] = moved(polygon_ref, p);
+      else if (cylinder) w.cylinders[o - w.polygon_count] = moved(cylinder_ref, p);
+      w.step[o] = s;
+      w.pose[o] = p;
     }
-  }
-
- private:
-  // Object o's pose at step s, written with the step.
-  BLAZE_HD Pose<Real> place(long o, std::uint64_t s, const Motion& m) const {
-    const Pose<Real> p = pose_at<Real>(m, static_cast<double>(s) * w.dt);
-    w.step[o] = s;
-    w.pose[o] = p;
-    return p;
   }
 };
 

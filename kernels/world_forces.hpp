@@ -56,6 +56,10 @@ struct WorldForces {
     Real work = 0;      // J, done this step by moving objects on i (energy accounts)
     Real thesis = 0;    // J, the thesis's estimate over i's wall contacts (Features::thesis_power)
     unsigned classes = 0;  // the classes whose sums this step has written (EnergyLedger::class_mask)
+    // Per class, its drive column and its sums as booked so far, written once after the contacts
+    // (the same additions in the same order as booking each contact in memory, without a load
+    // and a store per contact that held up the next contact's loads).
+    Real class_drive[kContactClasses] = {}, class_sum[kContactClasses][6] = {};
     // A contact with object w (world_contacts.hpp: key, and for a mesh the group of its contacts).
     const auto apply = [&](const auto& g, int material, int w, WallKey key, const auto* group) {
       if (!g.touching) return;
@@ -89,20 +93,31 @@ struct WorldForces {
       if (p.ledger.on()) {
         const Vec3<Real> mc = kMoment && Features::rotation ? c.moment : zero;
         const Real drive = (pose ? dot(c.force, pose->velocity_at(g.point)) + dot(mc, w_wall) : Real(0)) * dt;
-        const ContactClass cc = world.class_of(w);
-        const int cls = static_cast<int>(cc);
+        const int cls = static_cast<int>(world.class_of(w));
         work += drive;
-        p.ledger.column[ledger_column(cc)][i] += drive;
         const Vec3<Real> tc = Features::rotation ? cross(ri, c.force) + mc : zero;
         const Real add[6] = {c.force.x, c.force.y, c.force.z, tc.x, tc.y, tc.z};
-        const bool first = !(classes >> cls & 1u);  // the class's first contact this step: written, not added
-        for (int k = 0; k < 6; ++k) p.ledger.sum(cls, k, i) = first ? add[k] : p.ledger.sum(cls, k, i) + add[k];
+BLAZE_UNROLL
+        for (int k = 0; k < kContactClasses; ++k) {  // (constant indices: the books stay in registers)
+          if (k != cls) continue;
+          const bool first = !(classes >> k & 1u);  // the class's first contact this step
+          class_drive[k] = (first ? p.ledger.column[kLedgerWalls + k][i] : class_drive[k]) + drive;
+          for (int j = 0; j < 6; ++j) class_sum[k][j] = first ? add[j] : class_sum[k][j] + add[j];
+        }
         classes |= 1u << cls;
       }
     };
     for_each_world_contact(shape, body, world, i, apply);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
-    if (p.ledger.on()) p.ledger.class_mask[i] = static_cast<std::uint8_t>(classes);
+    if (p.ledger.on()) {
+BLAZE_UNROLL
+      for (int k = 0; k < kContactClasses; ++k) {
+        if (!(classes >> k & 1u)) continue;
+        p.ledger.column[kLedgerWalls + k][i] = class_drive[k];
+        for (int j = 0; j < 6; ++j) p.ledger.sum(k, j, i) = class_sum[k][j];
+      }
+      p.ledger.class_mask[i] = static_cast<std::uint8_t>(classes);
+    }
     if (!touched) return;
     if (p.ledger.on()) p.ledger.column[kLedgerDrive][i] += work;
     if constexpr (Features::thesis_power)
