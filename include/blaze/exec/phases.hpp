@@ -5,6 +5,14 @@
 //   check_phase(name, f)              code = max_i f(i); nonzero stops the step after this phase,
 //                                     and the caller (the host) acts on it, then resumes the
 //                                     phases after it (a rebuild; later, a feed or a migration)
+//   check_phase(name, f, handler)     the same, but code kHandledCode is first handed to
+//                                     `handler`, a phase list run in place (a rebuild without
+//                                     leaving the batch: pipeline/in_block_rebuild.hpp); when
+//                                     every check of the handler gives 0 the step goes on,
+//                                     else it stops as without one (the host then does the
+//                                     whole work, whatever the handler left). The one-block
+//                                     kernel and the per-phase runner run handlers; a CUDA
+//                                     graph's step hands the code to the host.
 // A phase reads what earlier phases wrote for any i and writes only its own i, so the list runs
 // the same way one launch per phase (run_phases: each phase timed by name) or many steps in one
 // launch (fused_steps: small systems, where a launch and a host round trip per phase would cost
@@ -73,10 +81,16 @@ struct KernelPhase {
   F f;
   bool enabled;
 };
-template <class F>
+template <class... P>
+struct Phases;
+// The code a check's handler is given (any other nonzero code goes to the host).
+constexpr int kHandledCode = 1;
+template <class F, class Handler = Phases<>>
 struct CheckPhase {
   const char* name;
   F f;
+  Handler handler;
+  static constexpr bool handled = Handler::size > 0;
 };
 template <class F>
 KernelPhase<F> kernel_phase(const char* name, const F& f, bool enabled = true) {
@@ -84,7 +98,11 @@ KernelPhase<F> kernel_phase(const char* name, const F& f, bool enabled = true) {
 }
 template <class F>
 CheckPhase<F> check_phase(const char* name, const F& f) {
-  return {name, f};
+  return {name, f, {}};
+}
+template <class F, class Handler>
+CheckPhase<F, Handler> check_phase(const char* name, const F& f, const Handler& handler) {
+  return {name, f, handler};
 }
 // A kernel phase and the check after it in one pass over the particles: f(i), then the check's
 // code for i. For a check that reads only what f wrote for the same i (the rebuild check after
@@ -104,8 +122,8 @@ ThenCheck<F, C> then_check(const F& f, const C& check) {
 }
 template <class P>
 struct is_check_phase : std::false_type {};
-template <class F>
-struct is_check_phase<CheckPhase<F>> : std::true_type {};
+template <class F, class Handler>
+struct is_check_phase<CheckPhase<F, Handler>> : std::true_type {};
 
 // The list: a trivially copyable recursive aggregate (std::tuple is not trivially copyable).
 template <class... P>
@@ -152,6 +170,8 @@ PhaseStop run_phases(Space space, Index n, const Phases<H, T...>& p, int from, i
     if constexpr (is_check_phase<H>::value) {
       int code = 0;
       timer.time(p.head.name, [&] { code = reduce_max(space, n, p.head.f, 0); });
+      if constexpr (H::handled)
+        if (code == kHandledCode && run_phases(space, n, p.head.handler, 0, decltype(p.head.handler)::size, timer).index < 0) code = 0;
       if (code != 0) return {index, code};
     } else if (p.head.enabled) {
       timer.time(p.head.name, [&] { for_each(space, phase_items(p.head.f, n), p.head.f); });
@@ -229,6 +249,9 @@ inline FusedClocks fused_clock_counts() {
 #define BLAZE_FUSED_CLOCK_PHASE(index)
 #endif
 
+// A check's handler's phases are counted from this index on (BLAZE_FUSED_CLOCKS).
+constexpr int kFusedHandlerClock = 8;
+
 // One phase of one step in the block; false: a check stopped the step (flag written).
 __device__ inline bool fused_phase(const Phases<>&, Index, int, int*, int*) { return true; }
 template <class H, class... T>
@@ -242,9 +265,13 @@ __device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* f
     atomicMax(code, c);
     BLAZE_FUSED_CLOCK_WORK(index);
     __syncthreads();
-    const int step_code = *code;  // the same in every thread: they stop together
-    __syncthreads();              // every thread has read it before a later check resets it
+    int step_code = *code;  // the same in every thread: they stop together
+    __syncthreads();        // every thread has read it before a later check resets it
     BLAZE_FUSED_CLOCK_PHASE(index);
+    if constexpr (H::handled) {
+      __shared__ int handler_flag;  // (a stopped handler's flag: not the step's)
+      if (step_code == kHandledCode && fused_phase(p.head.handler, n, kFusedHandlerClock, &handler_flag, code)) step_code = 0;
+    }
     if (step_code != 0) {
       if (threadIdx.x == 0) *flag = check_flag(index, step_code);
       return false;
