@@ -95,6 +95,9 @@ struct BuildNeighbours {
   Real skin;
   NeighbourView list;
   PeriodicImages<Real> images;  // periodic axes: each entry's image code written beside it
+  // The particles in cell order when they are not sorted in memory (the in-block rebuild:
+  // RankByKey's order; null: position k of the sorted order is particle k).
+  const Index* order = nullptr;
 
   // A neighbouring cell index along an axis of n cells: wrapped on a periodic axis, else -1 when
   // past the grid's edge.
@@ -120,10 +123,11 @@ struct BuildNeighbours {
           const std::uint32_t cell = grid.hash(x, y, z);
           const std::uint32_t s = start[cell];
           if (s == kEmptyCell) continue;
-          for (std::uint32_t j = s; j < end[cell]; ++j) {
-            if (static_cast<Index>(j) == i) continue;
+          for (std::uint32_t k = s; k < end[cell]; ++k) {
+            const Index j = order ? order[k] : static_cast<Index>(k);
+            if (j == i) continue;
             const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i)
-            Vec3<Real> d = position.get(static_cast<Index>(j)) - xi;
+            Vec3<Real> d = position.get(j) - xi;
             std::uint8_t code = 0;
             if (images.code) {  // the nearest image (d -> -d from j's side: the negated code)
               code = PeriodicImages<Real>::encode(d, images.length);
@@ -131,7 +135,7 @@ struct BuildNeighbours {
             }
             if (norm2(d) < reach * reach) {
               if (count < list.capacity) {
-                list.at(count, i) = static_cast<Index>(j);
+                list.at(count, i) = j;
                 if (images.code) images.code[list.offset(count, i)] = code;
               }
               ++count;
@@ -190,6 +194,80 @@ struct BuildReverse {
   }
 };
 
+// The in-block rebuild (pipeline/in_block_rebuild.hpp): the list rebuilt where the particles
+// lie, without sorting them in memory, for systems small enough to be stepped by one block
+// (phases.hpp). Its phases, in order:
+//   ClearCells      the cells the last build filled emptied again (by its keys); 1 if the rebuild
+//                   may not run in place (the caller's switch)
+//   HashInside      key[i] = i's cell; 1 if i left the grid (the host removes it)
+//   RankByKey       i's place in the order by (key, index): order[place] = i, sorted[place] = key
+//                   (a count over all particles: n^2 work, for a few hundred particles)
+//   CellBounds      over the sorted keys
+//   ListInPlace     BuildNeighbours through `order`, and i's reference position; 1 if i's list
+//                   overflowed (the host grows it)
+//   ReverseInPlace  pairs once: the reverse index (1: the list is not symmetric, a bug the host
+//                   build reports)
+// and the world lists (WorldListsInPlace, kernels/world_candidates.hpp). The list holds the
+// pairs a host rebuild's holds (the same cells in the same order; a cell's particles in memory
+// order), with entries naming the particles where they lie.
+struct ClearCells {
+  const std::uint32_t* key;  // the last build's keys
+  std::uint32_t* start;
+  bool enabled;
+  BLAZE_HD int operator()(Index i) const {
+    if (!enabled) return 1;
+    start[key[i]] = kEmptyCell;
+    return 0;
+  }
+};
+
+template <class Real>
+struct HashInside {
+  GridSpec<Real> grid;
+  Vec3Field<Real> position;
+  std::uint32_t* key;
+  BLAZE_HD int operator()(Index i) const {
+    int cx, cy, cz;
+    if (!grid.cell_of(position.get(i), cx, cy, cz)) return 1;
+    key[i] = grid.hash(cx, cy, cz);
+    return 0;
+  }
+};
+
+struct RankByKey {
+  const std::uint32_t* key;
+  Index n;
+  Index* order;
+  std::uint32_t* sorted;
+  BLAZE_HD void operator()(Index i) const {
+    const std::uint32_t k = key[i];
+    Index place = 0;
+    for (Index j = 0; j < n; ++j) {
+      const std::uint32_t kj = key[j];
+      place += (kj < k || (kj == k && j < i)) ? 1 : 0;
+    }
+    order[place] = i;
+    sorted[place] = k;
+  }
+};
+
+struct ReverseInPlace {
+  BuildReverse reverse;
+  bool on;  // pairs once
+  BLAZE_HD int operator()(Index i) const { return on ? reverse(i) : 0; }
+};
+
+template <class Real>
+struct ListInPlace {
+  BuildNeighbours<Real> build;
+  Vec3Field<Real> reference;
+  BLAZE_HD int operator()(Index i) const {
+    build(i);
+    reference.set(i, build.position.get(i));
+    return build.list.count[i] > build.list.capacity ? 1 : 0;
+  }
+};
+
 // 1 if particle i moved more than half the skin since the last build, or left the domain, or
 // the world's moving objects have moved as far as the world lists allow (world_candidates.hpp).
 template <class Real>
@@ -199,7 +277,7 @@ struct NeedsRebuild {
   Vec3Field<Real> reference;
   Real half_skin_squared;
   const std::uint64_t* world_step = nullptr;  // the step the world's poses are for; null: no lists to keep
-  std::uint64_t world_valid_until = ~std::uint64_t{0};  // the last step the lists hold for
+  const std::uint64_t* world_valid_until = nullptr;  // the last step the lists hold for (kept where the builds write it)
   // 0: list still valid; 1: particle i moved half the skin or left the grid; 2: its position is
   // not finite (NaN or Inf). The step's one reduction thus doubles as the NaN guard at no extra
   // load: a NaN force or velocity reaches the position at the next drift, which this check follows
@@ -212,7 +290,7 @@ struct NeedsRebuild {
     int cx, cy, cz;
     // (a periodic axis does not count: a particle past it is wrapped at the next build)
     if (grid.periodic ? !grid.inside_fixed_axes(x) : !grid.cell_of(x, cx, cy, cz)) return 1;
-    if (world_step && *world_step > world_valid_until) return 1;
+    if (world_step && *world_step > *world_valid_until) return 1;
     return norm2(x - reference.get(i)) > half_skin_squared ? 1 : 0;
   }
 };

@@ -91,4 +91,29 @@ struct BuildWorldCandidates {
   }
 };
 
+// The in-block rebuild's last phase (pipeline/in_block_rebuild.hpp): the world lists built again
+// for the particles as they are and the world as it stands (world step *world_step; null in a
+// still world), valid for valid_steps more; particle 0 counts the build (with the neighbour
+// list's, built before it).
+template <class Real>
+struct WorldListsInPlace {
+  BuildWorldCandidates<Real> build;
+  bool lists;  // world lists kept (without triangle lists: the host builds those)
+  const std::uint64_t* world_step;
+  std::uint64_t valid_steps;
+  std::uint64_t* valid_until;     // the rebuild check's (pipeline/world_candidates.hpp)
+  std::uint64_t* list_builds;     // world lists built in place
+  std::uint64_t* neighbour_builds;  // neighbour lists built in place
+  BLAZE_HD void operator()(Index i) const {
+    if (lists) build(i);
+    if (i != 0) return;
+    ++*neighbour_builds;
+    if (!lists) return;
+    ++*list_builds;
+    if (!world_step) return;  // a still world: the lists hold until particles move
+    const std::uint64_t s = *world_step;
+    *valid_until = s > ~std::uint64_t{0} - valid_steps ? ~std::uint64_t{0} : s + valid_steps;
+  }
+};
+
 }  // namespace blaze

@@ -15,6 +15,7 @@
 #include "blaze/exec/phases.hpp"
 #include "pipeline/broad_phase.hpp"
 #include "pipeline/contact_store.hpp"
+#include "pipeline/in_block_rebuild.hpp"
 #include "pipeline/world_candidates.hpp"
 #include "blaze/sim/features.hpp"
 #include "blaze/sim/snapshot.hpp"
@@ -75,6 +76,8 @@ struct SimulationParams {
   // Off: the list's cell order and the lower index (cheaper by a sort per list at each rebuild).
   bool canonical_order = false;
   PairThreads pair_threads = PairThreads::automatic;  // with pairs once: see PairThreads
+  // Rebuild small systems' neighbour lists inside the batch (pipeline/in_block_rebuild.hpp).
+  InBlockRebuild in_block_rebuild = InBlockRebuild::automatic;
 };
 
 // A state that is no longer finite (NaN or Inf), found by the per-step rebuild check: the run
@@ -481,7 +484,8 @@ class Simulation {
   double removed_energy() const { return removed_energy_; }
   std::uint64_t steps() const { return steps_; }
   double time() const { return static_cast<double>(steps_) * params_.dt; }
-  std::uint64_t neighbour_builds() const { return broad_.builds(); }
+  // Neighbour-list builds: the host's and the in-block rebuild's.
+  std::uint64_t neighbour_builds() const { return broad_.builds() + broad_.in_block_builds(); }
   Index neighbour_capacity() const { return broad_.capacity(); }
   const SimulationParams<Real>& params() const { return params_; }
   // Gravity from the next step on (a tilting plane, a turning frame; m/s^2).
@@ -517,6 +521,22 @@ class Simulation {
     for (Index c : count) total += c;
     return count.empty() ? 0 : total / static_cast<double>(count.size());
   }
+  // Each particle's listed neighbours as permanent ids, indexed by the particle's id (tests: the
+  // list a rebuild left, host or in place).
+  std::vector<std::vector<Index>> neighbour_ids() {
+    const NeighbourView nl = broad_.neighbours();
+    const std::vector<Index> id = store_.download_id();
+    std::vector<Index> count(id.size()), list(static_cast<std::size_t>(nl.capacity) * static_cast<std::size_t>(nl.stride));
+    copy_n(nl.count, count.size(), count.data(), Space{}, Host{});
+    copy_n(nl.index, list.size(), list.data(), Space{}, Host{});
+    std::vector<std::vector<Index>> out(id.empty() ? 0 : static_cast<std::size_t>(*std::max_element(id.begin(), id.end())) + 1);
+    for (std::size_t i = 0; i < id.size(); ++i)
+      for (Index k = 0; k < std::min(count[i], nl.capacity); ++k)
+        out[static_cast<std::size_t>(id[i])].push_back(id[static_cast<std::size_t>(list[nl.offset(k, static_cast<Index>(i))])]);
+    return out;
+  }
+  // Neighbour lists built in place (pipeline/in_block_rebuild.hpp), of neighbour_builds().
+  std::uint64_t in_block_builds() const { return broad_.in_block_builds(); }
   // Particle arrays, broad phase (not counting the sorter's scratch), pair slots and contact store, bytes.
   std::size_t memory_bytes() const {
     std::size_t slots = slot_state_.size() + slot_overlap_.size() * sizeof(Real);
@@ -581,6 +601,8 @@ class Simulation {
   // sizing what they write (statistics, pair slots).
   // The drift and the rebuild check are one check phase (then_check): the check reads only what
   // the drift wrote for the same particle (its position) and the world's step (move-world's).
+  // Its handler rebuilds small systems in place (pipeline/in_block_rebuild.hpp); the host
+  // rebuilds (on_check) what it leaves.
   static constexpr int kRebuildCheck = 1, kFirstForcePhase = 2, kPostForcePhase = 6;
   // history_dt: the step the contact states advance by (0 for the forces at t = 0).
   auto step_phases(Real history_dt) {
@@ -591,8 +613,10 @@ class Simulation {
     const NeighbourView nl = broad_.neighbours();
     auto phases = make_phases(
         kernel_phase("move-world", MoveWorld<Real>{world_.motion_view(), store_.size()}, world_.dynamic()),
-        check_phase("integrate", then_check(integrate<Stage::pre_force>(),
-                                            broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until()))),
+        check_phase("integrate",
+                    then_check(integrate<Stage::pre_force>(),
+                               broad_.rebuild_check_functor(store_, lists_.on() ? world_.step_counter() : nullptr, lists_.valid_until_at())),
+                    in_block_rebuild_phases(broad_, lists_, store_, world_.view(), world_.step_counter(), in_block_rebuild())),
         kernel_phase("contacts", contact_forces(history_dt), !once),
         kernel_phase("contacts", PairForces<Shape, Law, Kinematics, Features>{shape_, p, nl, laws_, slots, contacts_.pairs(), history_dt, broad_.images(),
                                                                              entry_threads(nl.capacity) ? store_.size() : 0}, once),
@@ -601,6 +625,13 @@ class Simulation {
         kernel_phase("integrate", integrate<Stage::post_force>()));
     static_assert(decltype(phases)::size == kPostForcePhase + 1, "step_phases: the phase indices above are stale");
     return phases;
+  }
+
+  // Whether the rebuild check's handler may rebuild in place (the broad phase and the world
+  // lists add their own conditions): not with contact history, canonical order or periodic axes.
+  bool in_block_rebuild() const {
+    return !Law::kHistory && !params_.canonical_order && !params_.periodic &&
+           in_block_rebuild_wanted<Space>(params_.in_block_rebuild, store_.size(), one_block_particles<Shape>());
   }
 
   // Whether the pair phase runs a thread a list entry (PairThreads; `capacity`: the list's).

@@ -62,6 +62,7 @@ class WorldCandidates {
     // A particle moves at most skin / 2 before the rebuild check trips; a moving object's points
     // at most skin / 2 more before valid_until.
     margin_ = v > 0 ? skin : Real(0.5) * skin;
+    from_host(device_state_, std::vector<std::uint64_t>{kForever, 0});
     const double steps = v > 0 ? std::floor(0.5 * static_cast<double>(skin) / (v * dt)) : HUGE_VAL;
     valid_steps_ = steps < 1e18 ? static_cast<std::uint64_t>(steps) : kForever;
   }
@@ -92,8 +93,19 @@ class WorldCandidates {
       if (triangle_.size() < need) triangle_.resize(need);
     }
     valid_until_ = valid_steps_ == kForever || step > kForever - valid_steps_ ? kForever : step + valid_steps_;
+    copy_n(&valid_until_, 1, device_state_.data(), Host{}, Space{});
     ++builds_;
   }
+  // The in-block rebuild's world-list phase (kernels/world_candidates.hpp), counting
+  // `neighbour_builds` too; the lists only when kept without triangle lists (in_place()).
+  WorldListsInPlace<Real> in_place(const ParticleView<Real>& p, const WorldView<Real>& world, const std::uint64_t* world_step,
+                                   std::uint64_t* neighbour_builds) {
+    const bool lists = on_ && !triangles_ && stride_ == p.n;
+    return {BuildWorldCandidates<Real>{p.position, p.radius, world, margin_, object_.data(), count_.data(), stride_},
+            lists, world_step, valid_steps_, device_state_.data(), device_state_.data() + 1, neighbour_builds};
+  }
+  // Can the in-block rebuild keep these lists (triangle lists: only the host)?
+  bool in_place() const { return !triangles_; }
   // The world view with the lists attached (unchanged when off).
   WorldView<Real> attach(WorldView<Real> w) const {
     if (!on_) return w;
@@ -102,8 +114,10 @@ class WorldCandidates {
       w.triangle_candidate = triangle_.data(), w.triangle_candidate_count = triangle_count_.data(), w.triangle_capacity = triangle_capacity_;
     return w;
   }
-  // The last world step the lists hold for (kForever: a static world, or lists off).
-  std::uint64_t valid_until() const { return on_ ? valid_until_ : kForever; }
+  // The last world step the lists hold for (kForever: a static world, or lists off), as the
+  // last build left it (an in-block build's too); the rebuild check reads it where it is.
+  std::uint64_t valid_until() const { return on_ && builds_ ? read_one(device_state_.data(), Space{}) : kForever; }
+  const std::uint64_t* valid_until_at() const { return on_ ? device_state_.data() : nullptr; }
   std::uint64_t valid_steps() const { return valid_steps_; }
   // Particles whose list overflowed at the last build (they test every object).
   Index overflowed() const {
@@ -118,7 +132,8 @@ class WorldCandidates {
     for (auto k : c) total += k == kWorldCandidatesOverflow ? objects : k;
     return total / static_cast<double>(c.size());
   }
-  std::uint64_t builds() const { return builds_; }
+  // Builds so far, the host's and the in-block rebuild's.
+  std::uint64_t builds() const { return builds_ + (builds_ ? read_one(device_state_.data() + 1, Space{}) : 0); }
   // Triangle lists: kept (a world with meshes and lists on); the room per particle; at the last
   // build, the particles past it (they test their bins' cells) and the mean triangles in reach.
   bool triangle_lists_on() const { return triangles_; }
@@ -186,6 +201,7 @@ class WorldCandidates {
   Buffer<std::uint8_t, Space> count_;
   Buffer<int, Space> triangle_;
   Buffer<std::uint16_t, Space> triangle_count_;
+  Buffer<std::uint64_t, Space> device_state_;  // [0]: valid_until, [1]: lists built in place
 };
 
 }  // namespace blaze

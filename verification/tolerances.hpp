@@ -670,4 +670,17 @@ constexpr double periodic_momentum = 1e-12;
 // placed across the wall (overlaps of ~1e-3 m without the moving-world test).
 constexpr double feed_wall_clearance = 1e-9;
 
+// --- the in-block rebuild (issue 19; pipeline/in_block_rebuild.hpp) ---
+// A run with lists rebuilt in place against the same run with host rebuilds, compared 1000 steps
+// in: the lists hold the same pairs, but the particles lie in another memory order, and a pair's
+// force is formed from its lower index (canonical order off), so the sums round differently
+// (and on the GPU the step a host rebuild stops is finished by other kernels, which contract
+// FMAs differently). Those roundings grow through the contacts of a falling bed and a tumbling
+// charge; measured on the CPU at 3000 steps: double 1.4e-12 r, float 5.6e-3 r (the tumbling
+// mill). At 1000 steps 1e-9 r (double) and 1e-3 r (float) leave room for that growth; a contact
+// missing from a list lets two bodies pass into each other at 0.1-1 m/s, a radius in a few
+// hundred steps (and the lists are checked against the pairs directly besides).
+constexpr double in_block_rebuild_double_over_radius = 1e-9;
+constexpr double in_block_rebuild_float_over_radius = 1e-3;
+
 }  // namespace blaze::tol
