@@ -223,9 +223,10 @@ class Simulation {
   void rebuild_neighbours() { rebuild(true); }
 
   // One step. Unless the phase timer is on (batched()), it goes through the same batch that run()
-  // uses, so a trajectory is bitwise the same however its steps were grouped (on the GPU, the
-  // batch's kernels and the per-phase kernels that finish a step after a rebuild may round
-  // differently: the compiler contracts a*b + c into FMAs per kernel).
+  // uses, so a trajectory is bitwise the same however its steps were grouped (on the GPU's
+  // one-block path every phase runs in the one kernel; a larger system's graph and the per-phase
+  // kernels that finish a step after a rebuild may round differently: the compiler contracts
+  // a*b + c into FMAs per kernel).
   void step() {
     if (batched()) return run_batched(1);
     finish_step(0);
@@ -690,26 +691,27 @@ class Simulation {
   // A batch of K steps with no host round trip per step (phases.hpp: one launch, or one graph; on
   // the host, the phases step after step): the batch stops at the first step whose check is set
   // (it needs a rebuild, or found a non-finite position), just after that check; the flags are
-  // read once. That step is then finished as step() would. No path runs a step past the stop, so
-  // every batch is as long as it may be (kMaxBatch: the flags' room).
+  // read once. The host acts on the check, and the next batch begins with the rest of that step
+  // (on the one-block path in the same kernel as every other step, so the rounding does not
+  // depend on where the batches stopped). No path runs a step past the stop, so every batch is as
+  // long as it may be (kMaxBatch: the flags' room).
   static constexpr std::uint64_t kMaxBatch = 256;
   void run_batched(std::uint64_t steps) {
     flags_.ensure(kMaxBatch);
+    int from = 0;  // the phase the batch's first step begins at
     while (steps > 0) {
       const std::uint64_t k = std::min(kMaxBatch, steps);
       for_each(Space{}, static_cast<Index>(k), Fill<int>{flags_.data(), 0});
-      fused_steps(Space{}, store_.size(), k, step_phases(params_.dt), flags_.data(), one_block_particles<Shape>());
+      fused_steps(Space{}, store_.size(), k, step_phases(params_.dt), flags_.data(), one_block_particles<Shape>(), from);
       const std::vector<int> flags = to_host(flags_, k);  // the batch's one round trip
       const auto j = static_cast<std::uint64_t>(std::find_if(flags.begin(), flags.end(), [](int f) { return f != 0; }) - flags.begin());
       steps_ += j;
-      if (j == k) {
-        steps -= k;
-        continue;
-      }
+      steps -= j;
+      from = 0;
+      if (j == k) continue;
       const PhaseStop stop = PhaseStop::of_flag(flags[j]);  // step j, from just after its check
       on_check(stop);
-      finish_step(stop.index + 1);
-      steps -= j + 1;
+      from = stop.index + 1;  // (step j is still to finish: steps >= 1)
     }
   }
 

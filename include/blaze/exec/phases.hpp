@@ -18,11 +18,13 @@
 // launch (fused_steps: small systems, where a launch and a host round trip per phase would cost
 // more than the work). Adding a phase is adding it to the list: both runners take it as it is.
 //
-// fused_steps(space, n, k, phases, flags): up to k steps; flags (zero before the call) stay 0 for
-// the steps that ran to the end, the stopped one's is check_flag(index of the check that stopped
-// it, its code), and the batch ends there (just after that check), so the caller finishes that
-// step from the next phase on. No path runs a step past the stop, so a batch may be as long as
-// the caller likes. Cuda, up to kFusedMaxParticles: one block runs all k steps, the phases
+// fused_steps(space, n, k, phases, flags, one_block_max, from): up to k steps, the first from
+// phase `from` on; flags (zero before the call) stay 0 for the steps that ran to the end, the
+// stopped one's is check_flag(index of the check that stopped it, its code), and the batch ends
+// there (just after that check): the caller acts on it and begins the next batch at the next
+// phase, so the one-block kernel runs every phase of every step (a step's rounding does not
+// depend on where batches stop: nvcc contracts a*b + c into FMAs per kernel). No path runs a
+// step past the stop, so a batch may be as long as the caller likes. Cuda, up to kFusedMaxParticles: one block runs all k steps, the phases
 // separated by __syncthreads(); no launch and no host round trip per step, which is what a step
 // of a few hundred particles costs otherwise (issue 6: the 242-ball mill). Cuda, larger: the batch
 // is one CUDA graph (graph_steps): a while node whose body is one step's phases, one kernel node
@@ -182,11 +184,12 @@ PhaseStop run_phases(Space space, Index n, const Phases<H, T...>& p, int from, i
 
 // Up to k steps, each through the per-phase runner (a check read back on the host every step);
 // the flag of the step a check stopped is written to `flags` (in Space's memory, zero before).
+// The first step begins at phase `from`.
 template <class Space, class... P>
-void stepwise_steps(Space, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags) {
+void stepwise_steps(Space, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, int from = 0) {
   Untimed untimed;
   for (std::uint64_t s = 0; s < k; ++s) {
-    const PhaseStop stop = run_phases(Space{}, n, phases, 0, Phases<P...>::size, untimed);
+    const PhaseStop stop = run_phases(Space{}, n, phases, s == 0 ? from : 0, Phases<P...>::size, untimed);
     if (stop.index < 0) continue;
     const int flag = check_flag(stop.index, stop.code);
     copy_n(&flag, 1, flags + s, Host{}, Space{});
@@ -195,8 +198,9 @@ void stepwise_steps(Space, Index n, std::uint64_t k, const Phases<P...>& phases,
 }
 
 template <class... P>
-void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, Index /*one_block_max*/ = kFusedMaxParticles) {
-  stepwise_steps(Host{}, n, k, phases, flags);
+void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, Index /*one_block_max*/ = kFusedMaxParticles,
+                 int from = 0) {
+  stepwise_steps(Host{}, n, k, phases, flags, from);
 }
 
 #if BLAZE_DEVICE_CODE
@@ -252,11 +256,13 @@ inline FusedClocks fused_clock_counts() {
 // A check's handler's phases are counted from this index on (BLAZE_FUSED_CLOCKS).
 constexpr int kFusedHandlerClock = 8;
 
-// One phase of one step in the block; false: a check stopped the step (flag written).
-__device__ inline bool fused_phase(const Phases<>&, Index, int, int*, int*) { return true; }
+// One phase of one step in the block (none before phase `from`); false: a check stopped the step
+// (flag written).
+__device__ inline bool fused_phase(const Phases<>&, Index, int, int*, int*, int = 0) { return true; }
 template <class H, class... T>
-__device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* flag, int* code) {
-  if constexpr (is_check_phase<H>::value) {
+__device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* flag, int* code, int from = 0) {
+  if (index < from) {
+  } else if constexpr (is_check_phase<H>::value) {
     BLAZE_FUSED_CLOCK_START;
     if (threadIdx.x == 0) *code = 0;
     __syncthreads();
@@ -284,18 +290,18 @@ __device__ bool fused_phase(const Phases<H, T...>& p, Index n, int index, int* f
     __syncthreads();
     BLAZE_FUSED_CLOCK_PHASE(index);
   }
-  return fused_phase(p.tail, n, index + 1, flag, code);
+  return fused_phase(p.tail, n, index + 1, flag, code, from);
 }
 
 template <class Phases>
-__global__ void __launch_bounds__(kFusedBlockSize) fused_steps_kernel(Index n, std::uint64_t k, const Phases* ph, int* flags) {
+__global__ void __launch_bounds__(kFusedBlockSize) fused_steps_kernel(Index n, std::uint64_t k, const Phases* ph, int* flags, int from) {
   __shared__ int code;
   for (std::uint64_t s = 0; s < k; ++s) {
     if (threadIdx.x == 0) flags[s] = 0;
 #ifdef BLAZE_FUSED_CLOCKS
     if (threadIdx.x == 0) ++fused_clock_steps;
 #endif
-    if (!fused_phase(*ph, n, 0, flags + s, &code)) return;
+    if (!fused_phase(*ph, n, 0, flags + s, &code, s == 0 ? from : 0)) return;
   }
 }
 
@@ -419,7 +425,8 @@ void graph_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
 // exceeds the kernel parameter space.
 // one_block_max: the most particles the one-block kernel takes (at most kFusedMaxParticles).
 template <class... P>
-void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, Index one_block_max = kFusedMaxParticles) {
+void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int* flags, Index one_block_max = kFusedMaxParticles,
+                 int from = 0) {
   using List = Phases<P...>;
   static_assert(std::is_trivially_copyable_v<List>, "kernel functors are copied to the GPU as bytes");
   if (n <= 0 || k == 0) return;
@@ -427,12 +434,17 @@ void fused_steps(Cuda, Index n, std::uint64_t k, const Phases<P...>& phases, int
     // BLAZE_STEPWISE=1 (the lever's baseline, bench/results/levers/graph-steps.md): a host round
     // trip per step, each step's phases in turn and the check read back.
     static const bool stepwise = std::getenv("BLAZE_STEPWISE") != nullptr;
-    if (stepwise) return stepwise_steps(Cuda{}, n, k, phases, flags);
+    if (stepwise) return stepwise_steps(Cuda{}, n, k, phases, flags, from);
+    if (from > 0) {  // the rest of a stopped step by the per-phase kernels, then the graph
+      stepwise_steps(Cuda{}, n, 1, phases, flags, from);
+      if (read_one(flags, Cuda{}) != 0 || k == 1) return;
+      ++flags, --k;
+    }
     return graph_steps(Cuda{}, n, k, phases, flags);
   }
   static Buffer<List, Cuda> slot(1);  // one per instantiation, kept
   copy_n(&phases, 1, slot.data(), Host{}, Cuda{});
-  fused_steps_kernel<<<1, kFusedBlockSize>>>(n, k, slot.data(), flags);
+  fused_steps_kernel<<<1, kFusedBlockSize>>>(n, k, slot.data(), flags, from);
   cuda_check(cudaGetLastError(), "fused_steps launch");
 }
 #endif
