@@ -97,7 +97,7 @@ struct WorldForces {
         work += drive;
         const Vec3<Real> tc = Features::rotation ? cross(ri, c.force) + mc : zero;
         const Real add[6] = {c.force.x, c.force.y, c.force.z, tc.x, tc.y, tc.z};
-BLAZE_UNROLL
+        BLAZE_UNROLL
         for (int k = 0; k < kContactClasses; ++k) {  // (constant indices: the books stay in registers)
           if (k != cls) continue;
           const bool first = !(classes >> k & 1u);  // the class's first contact this step
@@ -110,7 +110,7 @@ BLAZE_UNROLL
     for_each_world_contact(shape, body, world, i, apply);
     if constexpr (Law::kHistory) history.release_unseen(i, seen);
     if (p.ledger.on()) {
-BLAZE_UNROLL
+      BLAZE_UNROLL
       for (int k = 0; k < kContactClasses; ++k) {
         if (!(classes >> k & 1u)) continue;
         p.ledger.column[kLedgerWalls + k][i] = class_drive[k];

@@ -1,4 +1,5 @@
-// A small mill shared by the cases of moving worlds (test_world_lists.cpp, test_in_block_rebuild.cpp):
+// A small mill shared by the cases of moving worlds (test_world_lists.cpp, test_in_block_rebuild.cpp,
+// test_triangle_lists.cpp's balls):
 // the 0.3 m drum with four 2 cm lifters of test_energy_ledger.cpp, and a bed of its balls.
 #pragma once
 #include <cmath>
@@ -19,14 +20,15 @@ World<Real> small_mill(double rpm, double ramp) {
   w.motions.assign(static_cast<std::size_t>(w.object_count()), mill_motion(mill));
   return w;
 }
-// Balls of radius r (7800 kg/m^3) on a 22 mm lattice in the drum's lower half.
+// Balls of radius r (7800 kg/m^3) on a 22 mm lattice in a drum's lower half (axis z, 6 cm
+// long): two layers from y = bottom up, within `reach` (m) of the axis.
 template <class Real>
-ParticleState<Real> mill_balls(double r) {
+ParticleState<Real> mill_balls(double r, double bottom = -0.115, double reach = 0.105) {
   ParticleState<Real> s;
   for (double x = -0.11; x < 0.111; x += 0.022)
-    for (double y = -0.115; y < -0.005; y += 0.022)
+    for (double y = bottom; y < -0.005; y += 0.022)
       for (double z : {-0.0125, 0.0125})
-        if (std::hypot(x, y) < 0.105) s.add_sphere(vec_cast<Real>(Vec3<double>{x, y, z}), Real(r), Real(7800), 0);
+        if (std::hypot(x, y) < reach) s.add_sphere(vec_cast<Real>(Vec3<double>{x, y, z}), Real(r), Real(7800), 0);
   return s;
 }
 

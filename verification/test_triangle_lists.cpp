@@ -19,6 +19,7 @@
 #include "blaze/shapes/polyhedron_shape.hpp"
 #include "blaze/shapes/shape_io.hpp"
 #include "blaze/world/triangle_distance.hpp"
+#include "verification/mill_scenes.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"
 #include "verification/tolerances.hpp"
@@ -129,12 +130,7 @@ World<Real> drum_world(double rpm) {
 
 template <class Real>
 ParticleState<Real> drum_balls(double r) {
-  ParticleState<Real> s;
-  for (double x = -0.11; x < 0.111; x += 0.022)
-    for (double y = -0.125; y < -0.005; y += 0.022)
-      for (double z : {-0.0125, 0.0125})
-        if (std::hypot(x, y) < 0.12) s.add_sphere(vec_cast<Real>(Vec3<double>{x, y, z}), Real(r), Real(7800), 0);
-  return s;
+  return mill_balls<Real>(r, -0.125, 0.12);
 }
 
 template <class Real>

@@ -24,9 +24,10 @@
 // there (just after that check): the caller acts on it and begins the next batch at the next
 // phase, so the one-block kernel runs every phase of every step (a step's rounding does not
 // depend on where batches stop: nvcc contracts a*b + c into FMAs per kernel). No path runs a
-// step past the stop, so a batch may be as long as the caller likes. Cuda, up to kFusedMaxParticles: one block runs all k steps, the phases
-// separated by __syncthreads(); no launch and no host round trip per step, which is what a step
-// of a few hundred particles costs otherwise (issue 6: the 242-ball mill). Cuda, larger: the batch
+// step past the stop, so a batch may be as long as the caller likes. Cuda, up to
+// kFusedMaxParticles: one block runs all k steps, the phases separated by __syncthreads(); no
+// launch and no host round trip per step, which is what a step of a few hundred particles costs
+// otherwise (issue 6: the 242-ball mill). Cuda, larger: the batch
 // is one CUDA graph (graph_steps): a while node whose body is one step's phases, one kernel node
 // each; a check reduces into device memory and, when it stops the step, raises a stop flag that
 // the step's later kernels read first and return on, and the body's last kernel ends the loop.
