@@ -95,9 +95,6 @@ struct BuildNeighbours {
   Real skin;
   NeighbourView list;
   PeriodicImages<Real> images;  // periodic axes: each entry's image code written beside it
-  // The particles in cell order when they are not sorted in memory (the in-block rebuild:
-  // RankByKey's order; null: position k of the sorted order is particle k).
-  const Index* order = nullptr;
 
   // A neighbouring cell index along an axis of n cells: wrapped on a periodic axis, else -1 when
   // past the grid's edge.
@@ -123,11 +120,10 @@ struct BuildNeighbours {
           const std::uint32_t cell = grid.hash(x, y, z);
           const std::uint32_t s = start[cell];
           if (s == kEmptyCell) continue;
-          for (std::uint32_t k = s; k < end[cell]; ++k) {
-            const Index j = order ? order[k] : static_cast<Index>(k);
-            if (j == i) continue;
+          for (std::uint32_t j = s; j < end[cell]; ++j) {
+            if (static_cast<Index>(j) == i) continue;
             const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i)
-            Vec3<Real> d = position.get(j) - xi;
+            Vec3<Real> d = position.get(static_cast<Index>(j)) - xi;
             std::uint8_t code = 0;
             if (images.code) {  // the nearest image (d -> -d from j's side: the negated code)
               code = PeriodicImages<Real>::encode(d, images.length);
@@ -135,7 +131,7 @@ struct BuildNeighbours {
             }
             if (norm2(d) < reach * reach) {
               if (count < list.capacity) {
-                list.at(count, i) = j;
+                list.at(count, i) = static_cast<Index>(j);
                 if (images.code) images.code[list.offset(count, i)] = code;
               }
               ++count;
@@ -194,60 +190,43 @@ struct BuildReverse {
   }
 };
 
-// The in-block rebuild (pipeline/in_block_rebuild.hpp): the list rebuilt where the particles
-// lie, without sorting them in memory, for systems small enough to be stepped by one block
-// (phases.hpp). Its phases, in order:
-//   ClearCells      the cells the last build filled emptied again (by its keys); 1 if the rebuild
-//                   may not run in place (the caller's switch)
-//   HashInside      key[i] = i's cell; 1 if i left the grid (the host removes it)
-//   RankByKey       i's place in the order by (key, index): order[place] = i, sorted[place] = key
-//                   (a count over all particles: n^2 work, for a few hundred particles)
-//   CellBounds      over the sorted keys
-//   ListInPlace     BuildNeighbours through `order`, and i's reference position; 1 if i's list
-//                   overflowed (the host grows it)
+// The in-block rebuild (pipeline/in_block_rebuild.hpp): the list rebuilt without the grid, for
+// systems small enough to be stepped by one block (phases.hpp). Its phases:
+//   ListAllPairs    particle i tests every j: n^2 tests, but no chain of dependent loads (a walk of
+//                   the grid's 27 cells is one per cell, per particle, after a sort), and no
+//                   sort or reorder; the same pairs as a build through the cells, in memory order;
+//                   i's reference position; 1 if the rebuild may not run in place (the caller's
+//                   switch), i left the grid (the host removes it) or its list overflowed (the
+//                   host grows it)
 //   ReverseInPlace  pairs once: the reverse index (1: the list is not symmetric, a bug the host
 //                   build reports)
-// and the world lists (WorldListsInPlace, kernels/world_candidates.hpp). The list holds the
-// pairs a host rebuild's holds (the same cells in the same order; a cell's particles in memory
-// order), with entries naming the particles where they lie.
-struct ClearCells {
-  const std::uint32_t* key;  // the last build's keys
-  std::uint32_t* start;
+// and the world lists (WorldListsInPlace, kernels/world_candidates.hpp).
+template <class Real>
+struct ListAllPairs {
+  GridSpec<Real> grid;
+  Vec3Field<Real> position;
+  const Real* radius;
+  Real skin;
+  NeighbourView list;
+  Vec3Field<Real> reference;
+  Index n;
   bool enabled;
   BLAZE_HD int operator()(Index i) const {
     if (!enabled) return 1;
-    start[key[i]] = kEmptyCell;
-    return 0;
-  }
-};
-
-template <class Real>
-struct HashInside {
-  GridSpec<Real> grid;
-  Vec3Field<Real> position;
-  std::uint32_t* key;
-  BLAZE_HD int operator()(Index i) const {
+    const Vec3<Real> xi = position.get(i);
     int cx, cy, cz;
-    if (!grid.cell_of(position.get(i), cx, cy, cz)) return 1;
-    key[i] = grid.hash(cx, cy, cz);
-    return 0;
-  }
-};
-
-struct RankByKey {
-  const std::uint32_t* key;
-  Index n;
-  Index* order;
-  std::uint32_t* sorted;
-  BLAZE_HD void operator()(Index i) const {
-    const std::uint32_t k = key[i];
-    Index place = 0;
+    if (!grid.cell_of(xi, cx, cy, cz)) return 1;
+    const Real ri = radius[i];
+    Index count = 0;
     for (Index j = 0; j < n; ++j) {
-      const std::uint32_t kj = key[j];
-      place += (kj < k || (kj == k && j < i)) ? 1 : 0;
+      const Real reach = (ri + radius[j]) + skin;  // same rounding for (i, j) and (j, i), as BuildNeighbours
+      if (j == i || !(norm2(position.get(j) - xi) < reach * reach)) continue;
+      if (count < list.capacity) list.at(count, i) = j;
+      ++count;
     }
-    order[place] = i;
-    sorted[place] = k;
+    list.count[i] = count;
+    reference.set(i, xi);
+    return count > list.capacity ? 1 : 0;
   }
 };
 
@@ -255,17 +234,6 @@ struct ReverseInPlace {
   BuildReverse reverse;
   bool on;  // pairs once
   BLAZE_HD int operator()(Index i) const { return on ? reverse(i) : 0; }
-};
-
-template <class Real>
-struct ListInPlace {
-  BuildNeighbours<Real> build;
-  Vec3Field<Real> reference;
-  BLAZE_HD int operator()(Index i) const {
-    build(i);
-    reference.set(i, build.position.get(i));
-    return build.list.count[i] > build.list.capacity ? 1 : 0;
-  }
 };
 
 // 1 if particle i moved more than half the skin since the last build, or left the domain, or

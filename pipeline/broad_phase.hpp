@@ -112,28 +112,16 @@ class BroadPhase {
   // host rebuilds. Not with the previous list kept (contact history), canonical order or
   // periodic axes (a host rebuild does those).
   struct InBlockParts {
-    ClearCells clear;
-    HashInside<Real> hash;
-    RankByKey rank;
-    CellBounds cells;
-    ListInPlace<Real> list;
+    ListAllPairs<Real> list;
     ReverseInPlace reverse;
     std::uint64_t* builds;  // [0]: the lists built in place
   };
   InBlockParts in_block_parts(ParticleStore<Real, Space>& store, bool enabled) {
     auto p = store.view();
     enabled = enabled && builds_ > 0 && !with_previous_ && !by_id_ && !grid_.periodic && stride_ == p.n;
-    if (enabled) sorted_keys_.ensure(p.n), in_block_order_.ensure(p.n);  // (no bytes for runs that never use them)
     if (in_block_builds_.size() == 0) from_host(in_block_builds_, std::vector<std::uint64_t>{0});
-    const BuildNeighbours<Real> build{grid_, p.position, p.radius, cell_start_.data(), cell_end_.data(), skin_,
-                                      neighbours(), images(), in_block_order_.data()};
-    return {ClearCells{keys_.data(), cell_start_.data(), enabled},
-            HashInside<Real>{grid_, p.position, keys_.data()},
-            RankByKey{keys_.data(), p.n, in_block_order_.data(), sorted_keys_.data()},
-            CellBounds{sorted_keys_.data(), p.n, cell_start_.data(), cell_end_.data()},
-            ListInPlace<Real>{build, field(reference_)},
-            ReverseInPlace{BuildReverse{neighbours()}, with_reverse_},
-            in_block_builds_.data()};
+    return {ListAllPairs<Real>{grid_, p.position, p.radius, skin_, neighbours(), field(reference_), p.n, enabled},
+            ReverseInPlace{BuildReverse{neighbours()}, with_reverse_}, in_block_builds_.data()};
   }
   // Lists built in place (the in-block rebuild) since the start.
   std::uint64_t in_block_builds() const { return in_block_builds_.size() ? read_one(in_block_builds_.data(), Space{}) : 0; }
@@ -141,7 +129,7 @@ class BroadPhase {
   // Device memory held by the broad phase (grid cells, sort buffers, neighbour list), bytes.
   std::size_t bytes() const {
     std::size_t b = (keys_.size() + cell_start_.size() + cell_end_.size()) * sizeof(std::uint32_t);
-    b += images_.size() + sorted_keys_.size() * sizeof(std::uint32_t) + in_block_order_.size() * sizeof(Index);
+    b += images_.size();
     b += (order_.size() + list_.size() + count_.size() + reverse_.size() + previous_list_.size() + previous_count_.size()) *
          sizeof(Index);
     for (const auto& c : reference_) b += c.size() * sizeof(Real);
@@ -216,9 +204,7 @@ class BroadPhase {
   bool with_reverse_ = false, with_previous_ = false, by_id_ = false;
   Index previous_stride_ = 0, previous_capacity_ = 0;
   Buffer<Real, Space> reference_[3];
-  Buffer<std::uint32_t, Space> sorted_keys_;  // the in-block rebuild's keys in cell order
-  Buffer<Index, Space> in_block_order_;       // and its particles in cell order
-  Buffer<std::uint64_t, Space> in_block_builds_;
+  Buffer<std::uint64_t, Space> in_block_builds_;  // lists built in place
   Index stride_ = 0;
   Index capacity_ = 16;
   std::uint64_t builds_ = 0;

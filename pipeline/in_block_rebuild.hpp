@@ -3,12 +3,13 @@
 // A system small enough to be stepped by one block (phases.hpp: the 242-ball lab mill) spent a
 // quarter to a half of its step time on host rebuilds when its charge tumbles (H100: ~850
 // rebuilds in 20 000 steps at the default skin of 0.2 r, 0.13 ms each against ~25 us a step;
-// bench/results/levers/small-mill-phases.md). In place the particles are not sorted in memory (for a few hundred,
-// order does not matter): they are hashed, ranked by (cell, index) with a count over all of them
-// (n^2 work), and the list is built through that order (kernels/broad_phase_kernels.hpp): it
-// holds the pairs a host rebuild's holds, in the particles' present memory order. Trajectories
-// agree with host rebuilds' to rounding (a pair's force is formed from its lower index, which
-// the memory order decides; verification/test_in_block_rebuild.cpp).
+// bench/results/levers/small-mill-phases.md). In place the particles are not sorted in memory
+// (for a few hundred, order does not matter) and the grid is not used: each particle tests every
+// other (kernels/broad_phase_kernels.hpp, ListAllPairs: n^2 tests with no chain of dependent
+// loads, where a walk of the grid's cells is one); the list holds the pairs a host rebuild's
+// holds, in memory order. Trajectories agree with host rebuilds' to rounding (the order of a
+// particle's sums differs, and a pair's force is formed from its lower index, which the memory
+// order decides; verification/test_in_block_rebuild.cpp).
 // What stays with the host (the handler then gives 1 and the step stops for it, as before):
 // a particle that left the domain (its removal), a list that overflowed (its growth), contact
 // history (its states carried to the new list), canonical order and periodic axes (the host's
@@ -27,7 +28,7 @@
 namespace blaze {
 
 enum class InBlockRebuild { automatic, on, off };
-// The most particles the rebuild takes in place (RankByKey's n^2 count: ~1e6 comparisons here).
+// The most particles the rebuild takes in place (ListAllPairs' n^2 tests: ~1e6 here).
 constexpr Index kInBlockRebuildMax = 1024;
 
 // Whether a run of n particles rebuilds in place (the structural conditions are checked by the
@@ -44,9 +45,7 @@ template <class Real, class Space>
 auto in_block_rebuild_phases(BroadPhase<Real, Space>& broad, WorldCandidates<Real, Space>& lists, ParticleStore<Real, Space>& store,
                              const WorldView<Real>& world, const std::uint64_t* world_step, bool enabled) {
   auto b = broad.in_block_parts(store, enabled && lists.in_place());
-  return make_phases(check_phase("rebuild-clear", b.clear), check_phase("rebuild-hash", b.hash), kernel_phase("rebuild-rank", b.rank),
-                     kernel_phase("rebuild-cells", b.cells), check_phase("rebuild-list", b.list),
-                     check_phase("rebuild-reverse", b.reverse),
+  return make_phases(check_phase("rebuild-list", b.list), check_phase("rebuild-reverse", b.reverse),
                      kernel_phase("rebuild-world-lists", lists.in_place(store.view(), world, world_step, b.builds)));
 }
 

@@ -6,8 +6,8 @@
 //   ways, and no listed pair lies beyond the reach a list may have aged to (r_i + r_j + 2 skin).
 // - The same run: 1000 steps in, bodies within tol::in_block_rebuild_double_over_radius (double)
 //   or _float_ of where host rebuilds put them, and as many builds: the same pairs are listed,
-//   but the particles lie in another memory order and a pair is formed from its lower index, so
-//   sums round differently. Scenes: a bed of 343 spheres falling into a box (float and double,
+//   but in another order, the particles lie in another memory order and a pair is formed from its
+//   lower index, so sums round differently. Scenes: a bed of 343 spheres falling into a box (float and double,
 //   skins of 0.1 r and 0.3 r), the turning mill of test_world_lists.cpp with its world lists
 //   (15 objects, float and double, skins of 0.2 r and r), 64 cubes with each pair once (its
 //   reverse index).

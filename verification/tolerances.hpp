@@ -672,8 +672,9 @@ constexpr double feed_wall_clearance = 1e-9;
 
 // --- the in-block rebuild (issue 19; pipeline/in_block_rebuild.hpp) ---
 // A run with lists rebuilt in place against the same run with host rebuilds, compared 1000 steps
-// in: the lists hold the same pairs, but the particles lie in another memory order, and a pair's
-// force is formed from its lower index (canonical order off), so the sums round differently
+// in: the lists hold the same pairs, but in memory order rather than the grid cells', the
+// particles lie in another memory order, and a pair's force is formed from its lower index
+// (canonical order off), so the sums round differently
 // (and on the GPU the step a host rebuild stops is finished by other kernels, which contract
 // FMAs differently). Those roundings grow through the contacts of a falling bed and a tumbling
 // charge; measured on the CPU at 3000 steps: double 1.4e-12 r, float 5.6e-3 r (the tumbling
