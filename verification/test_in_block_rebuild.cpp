@@ -4,7 +4,7 @@
 // backend and InBlockRebuild::off gives the host's rebuilds to compare with.
 // - The lists it leaves: after every batch, every pair of spheres that touches is listed, both
 //   ways, and no listed pair lies beyond the reach a list may have aged to (r_i + r_j + 2 skin).
-// - The same run: 1000 steps in, bodies within tol::in_block_rebuild_double_over_radius (double)
+// - The same run: 1000 steps in (the mill 2000, past its ramp), bodies within tol::in_block_rebuild_double_over_radius (double)
 //   or _float_ of where host rebuilds put them, and as many builds: the same pairs are listed,
 //   but in another order, the particles lie in another memory order and a pair is formed from its
 //   lower index, so sums round differently. Scenes: a bed of 343 spheres falling into a box (float and double,
@@ -18,6 +18,7 @@
 #include <type_traits>
 #include "verification/cases/cube_bed.hpp"
 #include "verification/mill_scenes.hpp"
+#include "verification/report.hpp"
 #include "verification/scenes.hpp"
 
 using namespace blaze;
@@ -25,10 +26,10 @@ using namespace blaze::test;
 
 namespace {
 
-constexpr int kEarly = 1000;  // the step the trajectories are compared at
+const char* const kCase = "In-block rebuild (issue 19)";
 
 struct Outcome {
-  ParticleState<double> state;  // by id, kEarly steps in
+  ParticleState<double> state;  // by id, at the step compared
   std::uint64_t builds = 0, in_block = 0, world_list_builds = 0;
   Index removed = 0;
   long missed = 0, stale = 0;  // over the batches: touching pairs not listed, listed pairs beyond reach
@@ -55,7 +56,7 @@ void check_lists(const ParticleState<Real>& s, const std::vector<std::vector<Ind
 
 template <class Sim, class Real, class Laws, class Shape>
 Outcome run(SimulationParams<Real> prm, const Laws& laws, const World<Real>& world, const ParticleState<Real>& s, const Shape& shape,
-            InBlockRebuild mode, int steps, int batch, bool spheres) {
+            InBlockRebuild mode, int steps, int compare_at, int batch, bool spheres) {
   prm.in_block_rebuild = mode;
   Sim sim(prm, laws, world, s, shape);
   Outcome out;
@@ -75,7 +76,7 @@ Outcome run(SimulationParams<Real> prm, const Laws& laws, const World<Real>& wor
   for (int done = 0; done < steps; done += batch) {
     sim.run(static_cast<std::uint64_t>(batch));
     if (spheres) check_lists(sim.state(), sim.neighbour_ids(), static_cast<double>(prm.skin), out);
-    if (done + batch == kEarly) keep();
+    if (done + batch == compare_at) keep();
   }
   out.builds = sim.neighbour_builds();
   out.in_block = sim.in_block_builds();
@@ -87,12 +88,12 @@ Outcome run(SimulationParams<Real> prm, const Laws& laws, const World<Real>& wor
 // In place against host rebuilds, for one scene.
 template <class Sim, class Real, class Laws, class Shape = SphereShape>
 void check_scene(const std::string& name, const SimulationParams<Real>& prm, const Laws& laws, const World<Real>& world,
-                 const ParticleState<Real>& s, double r, int steps, const Shape& shape = Shape{}, Index removed_at_least = 0,
-                 bool contacts = true) {
+                 const ParticleState<Real>& s, double r, int steps, int compare_at, const Shape& shape = Shape{},
+                 Index removed_at_least = 0, bool contacts = true) {
   constexpr bool spheres = std::is_same_v<Shape, SphereShape>;
   const int batch = 50;
-  const Outcome host = run<Sim>(prm, laws, world, s, shape, InBlockRebuild::off, steps, batch, spheres);
-  const Outcome in = run<Sim>(prm, laws, world, s, shape, InBlockRebuild::on, steps, batch, spheres);
+  const Outcome host = run<Sim>(prm, laws, world, s, shape, InBlockRebuild::off, steps, compare_at, batch, spheres);
+  const Outcome in = run<Sim>(prm, laws, world, s, shape, InBlockRebuild::on, steps, compare_at, batch, spheres);
   double worst = 0, moved = 0;
   BOOST_TEST_REQUIRE(host.state.size() == in.state.size());
   for (std::size_t i = 0; i < host.state.size(); ++i) {
@@ -103,20 +104,24 @@ void check_scene(const std::string& name, const SimulationParams<Real>& prm, con
                           << in.builds << " with " << in.in_block << " in place (world lists " << host.world_list_builds << ", "
                           << in.world_list_builds << "); removed " << host.removed << ", " << in.removed << "; " << in.touching
                           << " touching pairs checked, " << in.missed << " not listed, " << in.stale << " listed beyond reach; at step "
-                          << kEarly << " bodies " << worst / r << " r apart (moved up to " << moved / r << " r)");
+                          << compare_at << " bodies " << worst / r << " r apart (moved up to " << moved / r << " r)");
   BOOST_TEST(host.in_block == 0u);
   BOOST_TEST(in.in_block >= 3u);                 // the lists were rebuilt in place ...
   BOOST_TEST(2 * in.in_block >= in.builds - 1);  // ... most of the time
   BOOST_TEST(moved > static_cast<double>(prm.skin));  // (the bodies did move past the skin by then)
-  BOOST_TEST(in.missed == 0);
-  BOOST_TEST(in.stale == 0);
+  if (spheres)
+    check_at_most({kCase, name + ": pairs touching but not listed, and listed beyond r_i + r_j + 2 skin, after every batch", "-",
+                   "a list holds every pair within reach"},
+                  static_cast<double>(in.missed + in.stale), 0);
   if (spheres && contacts) BOOST_TEST(in.touching > 100);
   BOOST_TEST(in.removed == host.removed);
   BOOST_TEST(in.removed >= removed_at_least);
   if (host.world_list_builds > 0) BOOST_TEST(in.world_list_builds == in.builds);  // the world lists with every list
   // as many builds (a chaotic run's may shift by one now and then)
   BOOST_TEST(std::labs(static_cast<long>(in.builds) - static_cast<long>(host.builds)) <= 1 + static_cast<long>(host.builds) / 50);
-  BOOST_TEST(worst <= (sizeof(Real) == 8 ? tol::in_block_rebuild_double_over_radius : tol::in_block_rebuild_float_over_radius) * r);
+  check_at_most({kCase, name + ": max |x_in place - x_host| / r at step " + std::to_string(compare_at), "-",
+                 "host rebuilds: the same pairs, summed in another order"},
+                worst / r, sizeof(Real) == 8 ? tol::in_block_rebuild_double_over_radius : tol::in_block_rebuild_float_over_radius);
 }
 
 template <class Real>
@@ -128,8 +133,9 @@ void falling_bed(double skin_fraction) {
   prm.skin = static_cast<Real>(skin_fraction * r);
   const Law law{LinearSpringDashpot<Real>::from_restitution(static_cast<Real>(k), Real(0.5)), HistoryFreeFriction<Real>::make(Real(0.4), Real(0.05))};
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, FullFeatures>;
-  check_scene<Sim>(std::string("falling bed, ") + (sizeof(Real) == 8 ? "double" : "float") + ", skin " + std::to_string(skin_fraction) + " r",
-                   prm, one_law(law), scene.world, scene.particles, r, 3000);
+  const std::string name = std::string("falling bed, ") + (sizeof(Real) == 8 ? "double" : "float") + ", skin " +
+                           std::to_string(skin_fraction).substr(0, 3) + " r";
+  check_scene<Sim>(name, prm, one_law(law), scene.world, scene.particles, r, 3000, 1000);
 }
 
 template <class Real>
@@ -141,8 +147,9 @@ void turning_mill(double skin_fraction) {
   auto prm = params<Real>(dt, {0, -9.81, 0}, 0.2, skin_fraction * r);
   prm.world_lists = WorldLists::on;
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, FullFeatures>;
-  check_scene<Sim>(std::string("turning mill, ") + (sizeof(Real) == 8 ? "double" : "float") + ", skin " + std::to_string(skin_fraction) + " r",
-                   prm, one_law(law), small_mill<Real>(40, 0.1), mill_balls<Real>(r), r, 3000);
+  const std::string name = std::string("turning mill, ") + (sizeof(Real) == 8 ? "double" : "float") + ", skin " +
+                           std::to_string(skin_fraction).substr(0, 3) + " r";
+  check_scene<Sim>(name, prm, one_law(law), small_mill<Real>(40, 0.1), mill_balls<Real>(r), r, 3000, 2000);
 }
 
 }  // namespace
@@ -169,7 +176,7 @@ BOOST_AUTO_TEST_CASE(cubes_with_pairs_once_rebuild_in_place) {
   auto prm = bed.scene.params;
   prm.pairs = PairEvaluation::once;
   check_scene<Sim>("64 cubes, pairs once", prm, one_law(bed.law), bed.scene.world, bed.scene.particles, 0.005,
-                   1500, bed.shape);
+                   1500, 1000, bed.shape);
 }
 
 // Balls dropped through a floorless domain: each leaves it at a rebuild, which the host does.
@@ -181,7 +188,7 @@ BOOST_AUTO_TEST_CASE(balls_leaving_the_domain_are_removed_by_the_host) {
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, ContactPointVelocity, FullFeatures>;
   const auto balls = mill_balls<double>(r);
   check_scene<Sim>("balls falling out of the domain", params<double>(dt, {0, -9.81, 0}, 0.13, 0.3 * r), one_law(law), World<double>{},
-                   balls, r, 4000, SphereShape{}, static_cast<Index>(balls.size()) / 2, false);
+                   balls, r, 4000, 1000, SphereShape{}, static_cast<Index>(balls.size()) / 2, false);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
