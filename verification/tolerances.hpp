@@ -672,16 +672,15 @@ constexpr double feed_wall_clearance = 1e-9;
 
 // --- the in-block rebuild (issue 19; pipeline/in_block_rebuild.hpp) ---
 // A run with lists rebuilt in place against the same run with host rebuilds, compared 1000 steps
-// in (2000 for the turning mill, past its ramp): the lists hold the same pairs, but in memory order rather than the grid cells', the
-// particles lie in another memory order, and a pair's force is formed from its lower index
-// (canonical order off), so the sums round differently
-// (and on the GPU the step a host rebuild stops is finished by other kernels, which contract
-// FMAs differently). Those roundings grow through the contacts of a falling bed and a tumbling
-// charge; measured on the CPU at 3000 steps: double 1.4e-12 r, float 5.6e-3 r (the tumbling
-// mill), and at the steps compared: double 4e-15 r, float 6e-7 r (cubes), 4e-7 r (mill). 1e-9 r
-// (double) and 1e-3 r (float) leave room for that growth; a contact
-// missing from a list lets two bodies pass into each other at 0.1-1 m/s, a radius in a few
-// hundred steps (and the lists are checked against the pairs directly besides).
+// in (2000 for the turning mill, past its ramp): the lists hold the same pairs, but in memory
+// order rather than the grid cells', the particles lie in another memory order, and a pair's
+// force is formed from its lower index (canonical order off), so the sums round differently.
+// Those roundings grow through the contacts of a falling bed and a tumbling charge; measured on
+// the CPU at 3000 steps: double 1.4e-12 r, float 5.6e-3 r (the tumbling mill), and at the steps
+// compared: double 4e-15 r, float 6e-7 r (cubes), 4e-7 r (mill); on the H200 (59dc865) 7e-18 r
+// and 5e-7 r. 1e-9 r (double) and 1e-3 r (float) leave room for that growth; a contact missing
+// from a list lets two bodies pass into each other at 0.1-1 m/s, a radius in a few hundred
+// steps (and the lists are checked against the pairs directly besides).
 constexpr double in_block_rebuild_double_over_radius = 1e-9;
 constexpr double in_block_rebuild_float_over_radius = 1e-3;
 
