@@ -205,7 +205,11 @@ void fused_steps(Host, Index n, std::uint64_t k, const Phases<P...>& phases, int
 }
 
 #if BLAZE_DEVICE_CODE
-constexpr int kFusedBlockSize = 256;
+// The one-block kernel's threads (BLAZE_FUSED_BLOCK_SIZE overrides it for lever builds).
+#ifndef BLAZE_FUSED_BLOCK_SIZE
+#define BLAZE_FUSED_BLOCK_SIZE 256
+#endif
+constexpr int kFusedBlockSize = BLAZE_FUSED_BLOCK_SIZE;
 
 #ifdef BLAZE_FUSED_CLOCKS
 // A profiling build (make NVCC_EXTRA=-DBLAZE_FUSED_CLOCKS; never the default): the one-block
