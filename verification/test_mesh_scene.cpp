@@ -6,7 +6,8 @@
 // - bad meshes and bad keys are refused naming the scene file, the [[mesh]] and the key: a missing
 //   file, a truncated STL, a file that is no mesh, scale <= 0, an unknown material, a bad rotate,
 //   an unknown key; a particle placed across or into a mesh is refused naming the mesh and its
-//   triangle; a [[fill]] avoids the mesh;
+//   triangle; a [[fill]] avoids the mesh; a wall or mesh facing away from the beads that fall
+//   onto it, or that a feed throws at it, is refused;
 // - the world's VTU lists the mesh's triangles.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -246,6 +247,46 @@ BOOST_AUTO_TEST_CASE(repairs_are_noted_and_bad_meshes_refused) {
   turned.replace(turned.find(up), up.size(), "[[0.08, 0, -0.08], [0.08, 0, 0.08], [-0.08, 0, 0.08], [-0.08, 0, -0.08]]");
   msg = rejection([&] { build(turned); });
   BOOST_TEST((has(msg, "[[wall]] #1: key 'vertices'") && has(msg, "faces away from the 64 particles over it")), msg);
+}
+
+// A feed that throws its beads sideways (+x) at a side wall, given as a [[wall]] or as a [[mesh]]
+// (stop 52: only the fall along gravity was looked at, so a wall whose back met the throw was let
+// through and the beads flew through it): refused when the wall faces away from the throw, naming
+// the wall and the feed, accepted when it faces the beads; a throw along the wall or away from it
+// does not look at it.
+BOOST_AUTO_TEST_CASE(walls_facing_away_from_a_feeds_throw_are_refused) {
+  const std::string stl = temp("blaze_side_wall.stl");
+  write_binary_stl(floor_mesh(80, 8), stl);
+  const auto fed = [](const std::string& side, const std::string& velocity) {
+    std::string text = floor_scene(kWallFloor, side);
+    const std::size_t from = text.find("[[lattice]]"), to = text.find("spacing = 0.02\n") + 15;
+    text.replace(from, to - from, "");
+    return text + "[[feed]]\ntype = \"bead\"\nregion = { kind = \"box\", lo = [-0.05, 0.05, -0.05], hi = [0.05, 0.1, 0.05] }\n"
+                  "rate = 1000\nvelocity = " + velocity + "\n";
+  };
+  const auto build = [](const std::string& text) { build_particles<double>(parse_scene(text, "side.toml"), nullptr); };
+  // the plane x = 0.08: normal +x (its back to the beads) or -x (facing them)
+  const std::string away = "[[wall]]\nmaterial = \"steel\"\nvertices = [[0.08, 0, -0.08], [0.08, 0.15, -0.08], [0.08, 0.15, 0.08], [0.08, 0, 0.08]]\n";
+  const std::string facing = "[[wall]]\nmaterial = \"steel\"\nvertices = [[0.08, 0, 0.08], [0.08, 0.15, 0.08], [0.08, 0.15, -0.08], [0.08, 0, -0.08]]\n";
+  std::string msg = rejection([&] { build(fed(away, "[1, 0, 0]")); });
+  BOOST_TEST((has(msg, "side.toml:") && has(msg, "[[wall]] #2: key 'vertices'") && has(msg, "faces away from the feed at") &&
+              has(msg, "[[feed]] #1: key 'velocity'") && has(msg, "of 64 rays along its velocity, 64 meet this wall first") &&
+              has(msg, "opposite order")),
+             msg);
+  BOOST_TEST(rejection([&] { build(fed(facing, "[1, 0, 0]")); }) == "(accepted)");
+  BOOST_TEST(rejection([&] { build(fed(away, "[0, 0, 1]")); }) == "(accepted)");    // thrown along the wall
+  BOOST_TEST(rejection([&] { build(fed(away, "[-1, 0, 0]")); }) == "(accepted)");   // thrown away from it
+  BOOST_TEST(rejection([&] { build(fed(away, "[2, -1, 0]")); }) != "(accepted)");   // and down towards it
+  // the same wall as a mesh: the floor STL turned about y by +90 degrees (normal +z -> +x)
+  const auto mesh = [&](const std::string& extra) {
+    return "[[mesh]]\nname = \"side\"\nfile = \"" + stl + "\"\nmaterial = \"steel\"\nscale = 0.001\n" + extra +
+           "rotate = { axis = [0, 1, 0], degrees = 90 }\ntranslate = [0.08, 0.07, 0.0]\n";
+  };
+  msg = rejection([&] { build(fed(mesh(""), "[1, 0, 0]")); });
+  BOOST_TEST((has(msg, "[[mesh]] #1: key 'file'") && has(msg, "the mesh 'side' faces away from the feed at") &&
+              has(msg, "meet this mesh first, from behind") && has(msg, "set flip = true")),
+             msg);
+  BOOST_TEST(rejection([&] { build(fed(mesh("flip = true\n"), "[1, 0, 0]")); }) == "(accepted)");
 }
 
 BOOST_AUTO_TEST_CASE(fills_avoid_meshes_and_the_vtu_shows_them) {

@@ -237,7 +237,10 @@ ParticleState<Real> build_particles(const Scene& s, const PolyhedronTable<Real>*
       add(f.type, x, f.velocity, true, name);
     }
   }
-  for (const FeedSpec& f : s.feeds) world.look_from_region(f.region, f.size.largest());
+  for (std::size_t k = 0; k < s.feeds.size(); ++k) {
+    const FeedSpec& f = s.feeds[k];
+    world.look_from_region(f.region, f.size.largest(), f.velocity, "the feed at " + s.place("feed[" + std::to_string(k) + "].velocity"));
+  }
   world.finish();
   return out;
 }

@@ -11,7 +11,9 @@
 //   cylinder: with s = (x - a) . u in [0, L] and rho = |(x - a) - s u|, the particle overlaps when
 //     rho + r > R (polyhedra: a vertex beyond R), and is outside the drum when rho > R;
 //   a wall faces away when particles lie behind it within its outline, none in front, and gravity
-//     draws them towards its back (g . n > 0): they would fall into the side it does not act on.
+//     draws them towards its back (g . n > 0): they would fall into the side it does not act on;
+//     a wall or mesh faces away from a feed that throws its particles when every ray along the
+//     feed's velocity that meets it first meets its back.
 // Touching is allowed: an overlap up to `slack` (1e-9 of the largest size) is not one.
 #pragma once
 #include <cmath>
@@ -53,6 +55,7 @@ class WorldOverlapCheck {
     }
     front_.assign(polygons_.size(), 0);
     behind_.assign(polygons_.size(), 0);
+    aim_.assign(polygons_.size(), Aim{});
     double largest = 0;
     for (const auto& t : s.types) largest = std::fmax(largest, t.is_sphere() ? t.radius : t.bounding_radius);
     for (std::size_t k = 0; k < s.meshes.size(); ++k) {
@@ -146,8 +149,13 @@ class WorldOverlapCheck {
   // A feed's region as the particles it will place (stop 50: a scene of feeds alone was never
   // looked at): kRegionLooks centres drawn in it, counted over the walls and meshes as placed
   // particles are, so that finish() refuses a wall or mesh facing away from what falls onto it.
-  void look_from_region(const InsertionRegion& region, double r) {
+  // A feed that throws its particles (velocity not zero) is also looked at along its aim (stop 52:
+  // a feed aimed sideways at the back of a wall was let through): from the same centres, the first
+  // wall or mesh triangle a ray along the velocity meets, met from the front or the back.
+  void look_from_region(const InsertionRegion& region, double r, const Vec3<double>& velocity = {0, 0, 0},
+                        const std::string& feed = "") {
     CounterEngine rng(0x5eed, 0);
+    const double speed = norm(velocity);
     for (int i = 0; i < kRegionLooks; ++i) {
       const Vec3<double> x = region.draw(rng, r);
       for (std::size_t k = 0; k < polygons_.size(); ++k) {
@@ -156,6 +164,7 @@ class WorldOverlapCheck {
         if (w.contains(x - d * w.normal)) (d > 0 ? front_[k] : behind_[k]) += 1;
       }
       for (std::size_t k = 0; k < mesh_facing_.size(); ++k) look_down(k, x);
+      if (speed > 0) look_along(x, velocity * (1 / speed), feed);
     }
   }
 
@@ -171,6 +180,24 @@ class WorldOverlapCheck {
                          std::to_string(behind_[k]) + " particles over it (normal " + vec_text(n) +
                          " by the right-hand rule of its vertex order, gravity draws them to its back, the side it does "
                          "not act on); list its vertices in the opposite order");
+    }
+    for (std::size_t k = 0; k < polygons_.size(); ++k)
+      if (!mill_part_[k] && aim_[k].behind > 0 && aim_[k].front == 0)
+        throw SceneError(s_.place("wall[" + std::to_string(k) + "].vertices") + ": the wall faces away from " + aim_[k].feed +
+                         ", which throws its particles at its back (of " + std::to_string(kRegionLooks) + " rays along its velocity, " +
+                         std::to_string(aim_[k].behind) + " meet this wall first, from behind; normal " + vec_text(polygons_[k].normal) +
+                         " by the right-hand rule of its vertex order): list its vertices in the opposite order");
+    for (std::size_t k = 0; k < mesh_facing_.size(); ++k) {
+      const MeshFacing& f = mesh_facing_[k];
+      if (f.aim.behind > 0 && f.aim.front == 0) {
+        const TriangleMesh& m = s_.meshes[k].mesh;
+        throw SceneError(s_.place("mesh[" + std::to_string(k) + "].file") + ": the mesh '" + s_.meshes[k].name + "' faces away from " +
+                         f.aim.feed + ", which throws its particles at its back (of " + std::to_string(kRegionLooks) +
+                         " rays along its velocity, " + std::to_string(f.aim.behind) + " meet this mesh first, from behind; triangle " +
+                         std::to_string(m.file_index[static_cast<std::size_t>(f.aim.example)]) + " in the file, normal " +
+                         vec_text(f.aim.normal) + " by the right-hand rule of its vertex order): set flip = " +
+                         (s_.meshes[k].flip ? "false" : "true") + " or reverse the file's vertex order");
+      }
     }
     for (std::size_t k = 0; k < mesh_facing_.size(); ++k) {
       const MeshFacing& f = mesh_facing_[k];
@@ -229,19 +256,25 @@ class WorldOverlapCheck {
   // kFacingLooks particles only), front (its normal against g) or back. Kept per mesh for finish().
   static constexpr long kFacingLooks = 256;
   static constexpr int kRegionLooks = 64;  // centres drawn in a feed's region (look_from_region)
+  // A feed's aim met an object (look_along): rays that met it first from the front, from behind,
+  // and the first feed that did so from behind (for the message).
+  struct Aim {
+    long front = 0, behind = 0;
+    std::string feed;
+    long example = -1;  // meshes: a triangle met from behind
+    Vec3<double> normal{0, 0, 0};
+  };
   struct MeshFacing {
     long looked = 0, front = 0, behind = 0;
     long example = -1;  // a triangle met from behind
     Vec3<double> normal{0, 0, 0};
+    Aim aim;
   };
-  void look_down(std::size_t k, const Vec3<double>& x) {
-    MeshFacing& f = mesh_facing_[k];
-    const double g = norm(s_.gravity);
-    if (!(g > 0) || f.looked >= kFacingLooks) return;
-    ++f.looked;
-    const Vec3<double> d = s_.gravity * (1 / g);
+  // The first triangle of mesh k that the ray x + t d (t > 0, d a unit vector) crosses, or -1;
+  // `along`: its t. Moller-Trumbore over every triangle.
+  long first_triangle(std::size_t k, const Vec3<double>& x, const Vec3<double>& d, double& along) const {
     const TriangleMesh& m = s_.meshes[k].mesh;
-    double nearest = INFINITY;
+    along = INFINITY;
     long hit = -1;
     for (std::size_t t = 0; t < m.size(); ++t) {
       const Vec3<double> a = m.corner(t, 0), e1 = m.corner(t, 1) - a, e2 = m.corner(t, 2) - a;
@@ -254,18 +287,56 @@ class WorldOverlapCheck {
       const Vec3<double> qe = cross(q, e1);
       const double v = dot(d, qe) / det;
       if (v < 0 || u + v > 1) continue;
-      const double along = dot(e2, qe) / det;
-      if (along > 0 && along < nearest) nearest = along, hit = static_cast<long>(t);
+      const double at = dot(e2, qe) / det;
+      if (at > 0 && at < along) along = at, hit = static_cast<long>(t);
     }
-    if (hit < 0) return;
+    return hit;
+  }
+  Vec3<double> triangle_normal(std::size_t k, long hit) const {
+    const TriangleMesh& m = s_.meshes[k].mesh;
     const std::size_t t = static_cast<std::size_t>(hit);
-    const Vec3<double> n = cross(m.corner(t, 1) - m.corner(t, 0), m.corner(t, 2) - m.corner(t, 0));
+    return cross(m.corner(t, 1) - m.corner(t, 0), m.corner(t, 2) - m.corner(t, 0));
+  }
+  void look_down(std::size_t k, const Vec3<double>& x) {
+    MeshFacing& f = mesh_facing_[k];
+    const double g = norm(s_.gravity);
+    if (!(g > 0) || f.looked >= kFacingLooks) return;
+    ++f.looked;
+    const Vec3<double> d = s_.gravity * (1 / g);
+    double along = 0;
+    const long hit = first_triangle(k, x, d, along);
+    if (hit < 0) return;
+    const Vec3<double> n = triangle_normal(k, hit);
     if (dot(n, d) < 0) {
       ++f.front;
     } else {
       ++f.behind;
       if (f.example < 0) f.example = hit, f.normal = n * (1 / norm(n));
     }
+  }
+  // From x along the unit vector d (a feed's aim): the first wall (the ray through its outline)
+  // or mesh triangle, counted as met from the front (d against its normal) or from behind.
+  void look_along(const Vec3<double>& x, const Vec3<double>& d, const std::string& feed) {
+    double nearest = INFINITY;
+    long wall = -1, mesh = -1, triangle = -1;
+    for (std::size_t k = 0; k < polygons_.size(); ++k) {
+      const PlanarPolygon<double>& w = polygons_[k];
+      const double towards = dot(d, w.normal);
+      if (std::fabs(towards) < 1e-12) continue;  // the ray runs along its plane
+      const double t = dot(w.centroid - x, w.normal) / towards;
+      if (t > 0 && t < nearest && w.contains(x + t * d)) nearest = t, wall = static_cast<long>(k);
+    }
+    for (std::size_t k = 0; k < mesh_facing_.size(); ++k) {
+      double along = 0;
+      const long hit = first_triangle(k, x, d, along);
+      if (hit >= 0 && along < nearest) nearest = along, wall = -1, mesh = static_cast<long>(k), triangle = hit;
+    }
+    const auto count = [&](Aim& a, const Vec3<double>& n, long example) {
+      if (dot(n, d) < 0) return void(++a.front);
+      if (a.behind++ == 0) a.feed = feed, a.example = example, a.normal = n * (1 / norm(n));
+    };
+    if (wall >= 0) count(aim_[static_cast<std::size_t>(wall)], polygons_[static_cast<std::size_t>(wall)].normal, -1);
+    if (mesh >= 0) count(mesh_facing_[static_cast<std::size_t>(mesh)].aim, triangle_normal(static_cast<std::size_t>(mesh), triangle), triangle);
   }
 
   void check_cylinder(std::size_t k, const Vec3<double>& x, double r, const std::vector<Vec3<double>>& vertices,
@@ -303,6 +374,7 @@ class WorldOverlapCheck {
   std::vector<std::vector<Vec3<double>>> mesh_corners_;  // per mesh: 3 a triangle
   std::vector<MeshBlockView> mesh_views_;
   std::vector<long> front_, behind_;
+  std::vector<Aim> aim_;  // per polygon: the feeds' aims (look_along)
   std::vector<MeshFacing> mesh_facing_;
 };
 
