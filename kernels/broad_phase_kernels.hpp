@@ -218,9 +218,9 @@ struct ListAllPairs {
     if (!grid.cell_of(xi, cx, cy, cz)) return 1;
     const Real ri = radius[i];
     Index count = 0;
-    // kChunk partners at a time: their loads are issued together, then tested (one at a time,
-    // the list's stores between loads kept them apart: H100, the 242-ball mill, ~66 000 cycles a
-    // build, bound by one memory latency per partner).
+    // kChunk partners at a time: their loads are issued together, then tested (one partner at a
+    // time, the list's stores kept each partner's loads waiting on the test before; H100, the
+    // turning 242-ball mill: 5.6e4 -> 5.8e4 steps/s, bench/results/levers/near-first.md).
     constexpr Index kChunk = 8;
     for (Index j0 = 0; j0 < n; j0 += kChunk) {
       Vec3<Real> xj[kChunk];
