@@ -146,23 +146,30 @@ build-cuda: $(BUILD)/cuda/blaze_tests $(STUDIES:%=$(BUILD)/cuda/study_%) $(BUILD
 # link of build-cuda through nvcc's front end and cicc, the device code to PTX (CHECK_CUDA_ARCH:
 # ptxas, the assembler to SASS, runs in the GPU machine's builds) and the host side unoptimised
 # (CHECK_NVCC_OPT), in $(BUILD)/check-cuda so no GPU build ever takes these objects for its own:
-# 46% of the full build's time on CI's two cores (studies/mill: 79 s against 172 s).
-# CHECK_CUDA_ARCH=sm_90 CHECK_NVCC_OPT=-O3 checks the full build.
+# 46% of the full build's time on CI's two cores (studies/mill: 79 s against 172 s). cicc's own
+# optimiser is off too (CHECK_NVCC_DEVICE_OPT): the front end, the device code generation and the
+# host compile are what catch a rotten GPU build, and NVVM's -O3 was 70% of a unit's time
+# (verification/test_cube_spin.cpp: 104 -> 42 s of CPU; the same 71 kernels in its PTX).
+# CHECK_CUDA_ARCH=sm_90 CHECK_NVCC_OPT=-O3 CHECK_NVCC_DEVICE_OPT= checks the full build.
 CHECK_CUDA_ARCH ?= compute_90
 CHECK_NVCC_OPT ?= -O0
+CHECK_NVCC_DEVICE_OPT ?= -Xcicc -O0
 check-cuda: $(HOST_OBJ)
 ifeq ($(NVCC),)
 	@echo "*** CUDA compile check SKIPPED: nvcc not found (install the CUDA toolkit to check the GPU build) ***"
 else
 	@$(MAKE) --no-print-directory -j$(NPROC) BUILD=$(BUILD)/check-cuda HOST_OBJ=$(HOST_OBJ) \
-	  CUDA_ARCH=$(CHECK_CUDA_ARCH) NVCC_OPT=$(CHECK_NVCC_OPT) build-cuda
-	@echo "CUDA build compiled for $(CHECK_CUDA_ARCH) (host $(CHECK_NVCC_OPT)) with $(NVCC) in $(BUILD)/check-cuda"
+	  CUDA_ARCH=$(CHECK_CUDA_ARCH) NVCC_OPT=$(CHECK_NVCC_OPT) NVCC_EXTRA="$(NVCC_EXTRA) $(CHECK_NVCC_DEVICE_OPT)" build-cuda
+	@echo "CUDA build compiled for $(CHECK_CUDA_ARCH) (host $(CHECK_NVCC_OPT), device $(or $(CHECK_NVCC_DEVICE_OPT),optimised)) with $(NVCC) in $(BUILD)/check-cuda"
 endif
 
 # Each run writes the suite's table rows to $(BUILD)/<backend>/verification.tsv (report.hpp).
 # TESTS=suite[/case][:...] runs a subset (Boost.Test --run_test syntax).
-RUN_TESTS = rm -f $(BUILD)/$(1)/verification.tsv; BLAZE_REPORT=$(BUILD)/$(1)/verification.tsv \
-  $(BUILD)/$(1)/blaze_tests --log_level=message --report_level=short --color_output=no $(if $(TESTS),--run_test=$(TESTS))
+# Each case's time goes to $(BUILD)/<backend>/junit.xml; tools/slowest_tests.py prints where the
+# suite's time went (after a failure too), so CI's log shows what makes it slow.
+RUN_TESTS = rm -f $(BUILD)/$(1)/verification.tsv $(BUILD)/$(1)/junit.xml; status=0; BLAZE_REPORT=$(BUILD)/$(1)/verification.tsv \
+  $(BUILD)/$(1)/blaze_tests --logger=HRF,message,stdout:JUNIT,error,$(BUILD)/$(1)/junit.xml --report_level=short \
+  --color_output=no $(if $(TESTS),--run_test=$(TESTS)) || status=$$?; python3 tools/slowest_tests.py $(BUILD)/$(1)/junit.xml; exit $$status
 # The MPI suite on each rank count of MPI_RANKS, its rows appended to the same table.
 RUN_MPI_TESTS = set -e; for np in $(MPI_RANKS); do echo "MPI suite on $$np rank(s)"; \
   OMP_NUM_THREADS=1 BLAZE_REPORT=$(BUILD)/$(1)/verification.tsv $(MPIRUN) -np $$np $(BUILD)/mpi/blaze_mpi_tests \
@@ -170,13 +177,13 @@ RUN_MPI_TESTS = set -e; for np in $(MPI_RANKS); do echo "MPI suite on $$np rank(
 ifeq ($(BACKEND),cuda)
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cuda/blaze_tests $(BUILD)/cuda/blaze $(BUILD)/cuda/study_hopper
-	OMP_NUM_THREADS=$(NPROC) $(call RUN_TESTS,cuda)
+	export OMP_NUM_THREADS=$(NPROC); $(call RUN_TESTS,cuda)
 else ifneq ($(SANITIZE)$(POISON),)
 # Sanitized or poisoned: the suite and the blaze program it runs; no CUDA check (nvcc does not take
 # these flags).
 test: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/blaze_tests $(BUILD)/cpu/blaze $(BUILD)/cpu/study_hopper
-	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $(call RUN_TESTS,cpu)
+	export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1; $(call RUN_TESTS,cpu)
 else
 test: deps
 	@tools/check_layering.sh
