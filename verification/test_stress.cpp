@@ -10,7 +10,6 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -21,9 +20,11 @@
 #include "pipeline/simulation.hpp"
 #include "verification/report.hpp"
 #include "verification/run_program.hpp"
+#include "verification/stress_size.hpp"
 #include "verification/tolerances.hpp"
 
 using namespace blaze;
+using blaze::test::full_size;
 namespace fs = std::filesystem;
 
 namespace {
@@ -93,11 +94,6 @@ void no_tunnelling(const Scene& s, double v, const char* label) {
     }
     BOOST_TEST(pen.worst < kMaxImpactOverlap * (1 + tol::impact_overlap_margin));
   }
-}
-
-bool full_size() {
-  const char* e = std::getenv("BLAZE_STRESS");
-  return e && std::string(e) == "full";
 }
 
 // A touching simple-cubic block of n^3 beads (r = 1 mm, spacing `spacing` radii, jittered by
