@@ -54,6 +54,7 @@
 #include "blaze/shapes/shape_io.hpp"
 #include "verification/report.hpp"
 #include "verification/scenes.hpp"
+#include "verification/stress_size.hpp"
 
 using namespace blaze;
 using namespace blaze::test;
@@ -370,8 +371,14 @@ void check_fractions(const std::string& case_name, const KindRun& run, double p_
 // steps); a bed counts as settled when the phase's mean kinetic energy is a small share of its
 // run's peak. The share there (edge-edge over all contacts of all beds' phase samples) is the
 // issue's assertion; the share while the beds collapse (samples of the first third of each run
-// with >= n/2 contacts) shows it fall.
+// with >= n/2 contacts) shows it fall. A single bed (CI) cannot resolve the issue's bound and is
+// held to a one-bed bound (tolerances.hpp).
 void check_settled_share(const std::string& case_name, const std::vector<KindRun>& runs, double duration, FigureData& fig) {
+  const bool pooled = runs.size() >= static_cast<std::size_t>(tol::contact_kind_settled_seeds);
+  const double bound = pooled ? tol::contact_kind_settled_share : tol::contact_kind_settled_share_one_bed;
+  const std::string bound_source = pooled ? "issue 4: below 15%; thesis Fig 3.27a"
+                                          : "one bed: tol::contact_kind_settled_share_one_bed; make stress pools " +
+                                                std::to_string(tol::contact_kind_settled_seeds) + " against 15%";
   const double start = (1 - tol::contact_kind_settled_window) * duration;
   HostKinds settled, collapsing;
   double lowest = 1, highest = 0, worst_kinetic = 0;
@@ -405,16 +412,15 @@ void check_settled_share(const std::string& case_name, const std::vector<KindRun
                                << " beds): " << settled.thesis_share() << " (beds:" << per_bed
                                << "), largest mean kinetic energy " << worst_kinetic << " of its run's peak");
   fig.block("settled phase of (a), all beds: t_start_s t_end_s thesis_rule_share bound lowest_bed highest_bed");
-  fig.row(start, duration, settled.thesis_share(), tol::contact_kind_settled_share, lowest, highest);
+  fig.row(start, duration, settled.thesis_share(), bound, lowest, highest);
   const std::string phase = "last " + std::to_string(static_cast<int>(100 * tol::contact_kind_settled_window)) + "% of a " +
                             seconds(duration) + " run, every " + std::to_string(tol::contact_kind_thesis_rule_every) +
                             " steps, " + std::to_string(runs.size()) + " beds";
   check_at_most({case_name, "beds settled: largest mean kinetic energy over the " + phase + " / its run's peak", "-",
                  "tol::contact_kind_settled_kinetic"},
                 worst_kinetic, tol::contact_kind_settled_kinetic);
-  check_at_most({case_name, kRule + "edge-edge share over the settled phase (" + phase + ")", "<= 10%",
-                 "issue 4: below 15%; thesis Fig 3.27a"},
-                settled.thesis_share(), tol::contact_kind_settled_share);
+  check_at_most({case_name, kRule + "edge-edge share over the settled phase (" + phase + ")", "<= 10%", bound_source},
+                settled.thesis_share(), bound);
   check_at_least({case_name, kRule + "edge-edge share while the beds collapse (first third, >= n/2 contacts), above the settled share",
                   "-", "thesis 3.4.3: edge-edge share falls as the bed settles"},
                  collapsing.thesis_share(), settled.thesis_share());
@@ -528,9 +534,12 @@ BOOST_AUTO_TEST_CASE(fig_3_27_edge_edge_fraction) {
   const std::string name_b = "Contact kinds (b): drum from rest (3.4.3, Fig 3.27b)";
   const std::string name_c = "Contact kinds (c): drum, 1 m/s to the wall (3.4.3, Fig 3.27c)";
   // Bed (a) with seed 3 is the figure's and the fraction checks'; seeds 4, 5, ... join it for the
-  // settled share.
+  // settled share under `make stress` and for the figure. CI runs seed 3 alone, which does not
+  // resolve the issue's bound: it is held to a one-bed bound (tolerances.hpp).
+  const bool all_beds = full_size() || fig.enabled();
+  const long n_beds = all_beds ? tol::contact_kind_settled_seeds : tol::contact_kind_settled_seeds_ci;
   std::vector<KindRun> beds;
-  for (unsigned seed = 3; beds.size() < static_cast<std::size_t>(tol::contact_kind_settled_seeds); ++seed) {
+  for (unsigned seed = 3; beds.size() < static_cast<std::size_t>(n_beds); ++seed) {
     const auto box = polyhedron_packing(shape.table, 0, static_cast<int>(tol::contact_kind_box_cubes), seed, mat.dt);
     FigureData quiet;  // only the first bed's steps go to the figure
     beds.push_back(run_scene(beds.empty() ? name_a : name_a + ", seed " + std::to_string(seed), shape, cube, mat.law, box, box_duration, true,

@@ -99,9 +99,16 @@ constexpr double packed_overlap_over_pitch = 0.03;
 constexpr double tumbling_angular_momentum = 1e-6;
 constexpr double tumbling_energy = 1e-4;
 // Elastic polyhedron collisions (issue 3, acceptance 4): kinetic energy after separation within
-// the issue's 0.5%, over this many cases (half cube-cube, half octahedron-cube).
+// the issue's 0.5%, over this many cases (half cube-cube, half octahedron-cube): the issue's 10^4
+// under `make stress` (187 s on 2 cores), 1200 in CI (23 s), the same orientations as the first
+// 600 pairs of each half. A defect that spoils a fraction p of the collisions passes 600 with
+// probability (1 - p)^600, under 5% for p >= 0.5% (10^4 cases: p >= 0.06%); a flipped normal
+// spoils 40-60% (the thesis normal's, measured); at dt = t_c/100, 10 of the 1200 end beyond 0.5%
+// (122 of 10^4; 2026-12-07). The thesis normal's gains, asserted in more than 1/20 of the pairs,
+// are 8.7% of cube-cube pairs: 52 +- 7 of 600 against 30 needed, 3.2 sigma.
 constexpr double polyhedron_collision_energy = 5e-3;
 constexpr long polyhedron_collision_cases = 10000;
+constexpr long polyhedron_collision_cases_ci = 1200;
 // Time step of those collisions: the force is conservative but jumps its lever arm where the
 // least-penetration feature changes, which costs first-order energy errors: worst case measured
 // 3% at t_c/100, 0.74% at t_c/400, 0.32% at t_c/1600 (2026-11-22).
@@ -321,9 +328,19 @@ constexpr double contact_kind_settled_kinetic = 5e-3;
 // 0.091-0.185 across seeds and last-bit changes of the arithmetic (pooled over 4 beds: 0.126,
 // 0.139, 0.143), too close to the bound; over 0.675-0.9 s, 0.092-0.142 (seeds 3-8, 2026-11-29).
 constexpr double contact_kind_settled_share = 0.15;
-// The share is pooled over this many beds, seeds 3, 4, ...: measured 0.118 with a bed-to-bed
-// spread of 0.016, so the pool's sigma is ~0.007, 4.5 of them under the bound.
+// The share is pooled over this many beds, seeds 3, 4, ... (`make stress` and the figure): measured
+// 0.118 with a bed-to-bed spread of 0.016 (2026-11-29), 0.112 with 0.027 (beds 0.081-0.155,
+// 2026-12-07), so the pool's sigma is ~0.011, 3.5 of them under the bound.
 constexpr long contact_kind_settled_seeds = 6;
+// CI runs one bed (24 s on 2 cores; six take 144 s). One bed does not resolve the issue's bound:
+// its share is one draw of the spread above, 1.4 sigma under 0.15 (seed 5 alone reads 0.155), so
+// it is held to the pooled mean plus 3.3 bed-to-bed sigmas instead (a last-bit change of the
+// arithmetic then fails it with ~0.05% chance). That fails a classification gone wrong (random
+// touches: 0.54, 16 sigma above) and a bed left at the collapse's share (0.25-0.27 over the first
+// third, ~2 sigma); a bed still moving fails tol::contact_kind_settled_kinetic. `make stress`
+// asserts the issue's 0.15 over the six beds.
+constexpr long contact_kind_settled_seeds_ci = 1;
+constexpr double contact_kind_settled_share_one_bed = 0.20;
 constexpr double contact_kind_scene_stiffness = 1e4;
 // The thesis's rule is evaluated on the host every this many steps (~5 ms per state).
 constexpr long contact_kind_thesis_rule_every = 50;
