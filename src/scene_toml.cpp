@@ -625,6 +625,36 @@ bool inside_domain(const Scene& s, const Vec3<double>& x, double r) {
          x.z - r >= s.domain_lo.z && x.z + r <= s.domain_hi.z;
 }
 
+std::string shown_vec(const Vec3<double>& v);
+
+// Can a particle touch the convex planar polygon `v` (a wall, a mesh triangle) inside the domain?
+// False when the polygon's box misses the domain grown by `margin`, or its plane passes the grown
+// domain by (the box's separating axes and the plane's; without the edges' cross axes the test
+// may answer true for a polygon that misses, never false for one that reaches).
+bool reaches_domain(const Scene& s, const Vec3<double>* v, std::size_t n, double margin) {
+  const Vec3<double> lo = s.domain_lo - Vec3<double>{margin, margin, margin}, hi = s.domain_hi + Vec3<double>{margin, margin, margin};
+  Vec3<double> a = v[0], b = v[0];
+  for (std::size_t i = 1; i < n; ++i)
+    a = {std::fmin(a.x, v[i].x), std::fmin(a.y, v[i].y), std::fmin(a.z, v[i].z)},
+    b = {std::fmax(b.x, v[i].x), std::fmax(b.y, v[i].y), std::fmax(b.z, v[i].z)};
+  if (a.x > hi.x || a.y > hi.y || a.z > hi.z || b.x < lo.x || b.y < lo.y || b.z < lo.z) return false;
+  Vec3<double> normal{0, 0, 0};
+  for (std::size_t i = 1; i + 1 < n; ++i) normal = normal + cross(v[i] - v[0], v[i + 1] - v[0]);
+  const Vec3<double> c = (lo + hi) * 0.5, e = (hi - lo) * 0.5;
+  const double reach = e.x * std::fabs(normal.x) + e.y * std::fabs(normal.y) + e.z * std::fabs(normal.z);
+  return std::fabs(dot(normal, c - v[0])) <= reach;
+}
+
+// A still object no particle can reach (every part of it beyond a particle diameter from the
+// domain, where particles are removed) is a placement mistake: a mesh in mm read as m, a sign.
+// A moving one may come in later and is let be.
+double reach_margin(const Scene& s) {
+  double largest = 0;
+  for (const auto& t : s.types) largest = std::fmax(largest, t.is_sphere() ? t.radius : t.bounding_radius);
+  return 2 * largest;
+}
+std::string domain_text(const Scene& s) { return shown_vec(s.domain_lo) + " to " + shown_vec(s.domain_hi) + " m"; }
+
 long read_placements(const toml::table& root, const std::string& file, Scene& s) {
   const auto types = type_names(s);
   long total = 0;
@@ -953,6 +983,10 @@ void read_world(const toml::table& root, const std::string& file, Scene& s) {
       }
     }
     w.motion = read_motion(f, file, item_label("wall", k), "wall[" + std::to_string(k) + "]", s);
+    if (!w.motion.moves() && !reaches_domain(s, w.vertices.data(), w.vertices.size(), reach_margin(s)))
+      f.fail(*f.get("vertices"), "vertices", "a polygon that particles can reach: this one lies wholly beyond a particle diameter (" +
+                                                 Scene::shortest(reach_margin(s)) + " m) from the domain, " + domain_text(s) +
+                                                 " (a still wall; one with a motion may lie outside)");
     w.contact_class = read_contact_class(f);
     note_wall_speed(s, item_label("wall", k), f.where_of("motion"), peak_speed(w.motion, w.vertices));
     s.walls.push_back(w);
@@ -1028,6 +1062,21 @@ void read_meshes(const toml::table& root, const std::string& file, Scene& s) {
     m.report = report.summary();
     if (!m.report.empty()) s.notes.push_back("note: " + f.where_of("file") + ": " + label + " '" + m.path + "': " + m.report);
     m.motion = read_motion(f, file, label, prefix, s);
+    if (!m.motion.moves()) {
+      bool reaches = false;
+      Vec3<double> a = m.mesh.vertices.empty() ? Vec3<double>{} : m.mesh.vertices[0], b = a;
+      for (const auto& v : m.mesh.vertices)
+        a = {std::fmin(a.x, v.x), std::fmin(a.y, v.y), std::fmin(a.z, v.z)}, b = {std::fmax(b.x, v.x), std::fmax(b.y, v.y), std::fmax(b.z, v.z)};
+      for (const auto& t : m.mesh.triangles) {
+        const Vec3<double> tri[3] = {m.mesh.vertices[t[0]], m.mesh.vertices[t[1]], m.mesh.vertices[t[2]]};
+        if ((reaches = reaches_domain(s, tri, 3, reach_margin(s)))) break;
+      }
+      if (!reaches)
+        f.fail(*f.get("file"), "file", "a mesh that particles can reach: placed (scale " + Scene::shortest(m.scale) + ", rotate, translate) it spans " +
+                                           shown_vec(a) + " to " + shown_vec(b) + " m and no triangle comes within a particle diameter (" +
+                                           Scene::shortest(reach_margin(s)) + " m) of the domain, " + domain_text(s) +
+                                           " (scale = 0.001 reads a file in mm; a mesh with a motion may lie outside)");
+    }
     m.contact_class = read_contact_class(f);
     note_wall_speed(s, label, f.where_of("motion"), peak_speed(m.motion, m.mesh.vertices));
     f.note(s, prefix + ".", {"file", "scale", "translate"});

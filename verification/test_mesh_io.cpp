@@ -229,7 +229,13 @@ BOOST_AUTO_TEST_CASE(malformed_files_are_refused_naming_the_place) {
   write_text(stl, "solid x\n" + facet + "endsolid x\n" + facet);
   BOOST_TEST(error_of(stl).rfind(stl + ":10: 'facet' after 'endsolid'", 0) == 0, error_of(stl));
   write_text(stl, std::string(80, 'x') + std::string("\x02\0\0\0", 4) + std::string(60, '\0'));  // 2 triangles promised, 1.2 given
-  BOOST_TEST(error_of(stl).find("neither a binary STL (84 + 50 n bytes for n triangles; this file has 144) nor an ASCII one") != std::string::npos, error_of(stl));
+  BOOST_TEST(error_of(stl).find("neither a binary STL (84 + 50 n bytes for n triangles; this file has 144, and its header announces 2 "
+                                "triangles, 184 bytes: truncated, or not an STL) nor an ASCII one") != std::string::npos,
+             error_of(stl));
+  write_text(stl, std::string(80, 'x') + std::string("\x01\0\0\0", 4) + std::string(110, '\0'));  // 1 triangle and 60 bytes more
+  BOOST_TEST(error_of(stl).find("announces 1 triangles, 134 bytes: bytes past the last triangle") != std::string::npos, error_of(stl));
+  write_text(stl, std::string(50, 'x'));  // shorter than a header
+  BOOST_TEST(error_of(stl).find("this file has 50) nor an ASCII one") != std::string::npos, error_of(stl));
   write_text(obj, "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
   BOOST_TEST(error_of(obj).rfind(obj + ":3: vertex reference '3' outside the 2 vertices read so far", 0) == 0, error_of(obj));
   write_text(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");

@@ -5,7 +5,8 @@
 // - what the repair changed (a flipped triangle, a repeated one) is a note naming the file;
 // - bad meshes and bad keys are refused naming the scene file, the [[mesh]] and the key: a missing
 //   file, a truncated STL, a file that is no mesh, scale <= 0, an unknown material, a bad rotate,
-//   an unknown key; a particle placed across or into a mesh is refused naming the mesh and its
+//   an unknown key, a still mesh or wall that no particle can reach (wholly beyond a particle
+//   diameter from the domain); a particle placed across or into a mesh is refused naming the mesh and its
 //   triangle; a [[fill]] avoids the mesh; a wall or mesh facing away from the beads that fall
 //   onto it, or that a feed throws at it, is refused;
 // - the world's VTU lists the mesh's triangles.
@@ -197,7 +198,7 @@ BOOST_AUTO_TEST_CASE(repairs_are_noted_and_bad_meshes_refused) {
     std::ofstream(temp("blaze_truncated.stl"), std::ios::binary) << bytes.substr(0, bytes.size() - 20);
     std::ofstream(temp("blaze_not_a_mesh.stl")) << "this is not a mesh\n";
   }
-  refused(floor_scene(with_file(kMeshFloor, temp("blaze_truncated.stl"))), {"[[mesh]] #1", "key 'file'", "binary STL"});
+  refused(floor_scene(with_file(kMeshFloor, temp("blaze_truncated.stl"))), {"[[mesh]] #1", "key 'file'", "binary STL", "header announces 33 triangles", "truncated"});
   refused(floor_scene(with_file(kMeshFloor, temp("blaze_not_a_mesh.stl"))), {"[[mesh]] #1", "key 'file'", "ASCII"});
   const auto edited = [&](const std::string& from, const std::string& to) {
     std::string b = block;
@@ -211,6 +212,21 @@ BOOST_AUTO_TEST_CASE(repairs_are_noted_and_bad_meshes_refused) {
   refused(edited("rotate = { axis = [1, 0, 0], degrees = -90 }", "rotate = { axis = [0, 0, 0], degrees = 5 }"), {"key 'axis'", "non-zero"});
   refused(edited("name = \"floor\"", "colour = \"red\""), {"[[mesh]] #1", "unknown key 'colour'"});
   refused(edited("file = ", "nofile = "), {"[[mesh]] #1"});
+  // a still mesh or wall that no particle can reach (wholly beyond a bead's diameter, 8 mm, from
+  // the domain: y in [-0.05, 0.15]) is a placement mistake; one with a motion may come in later
+  refused(edited("translate = [0.0, 0.0, 0.0]", "translate = [0.0, 5.0, 0.0]"),
+          {"bad.toml:", "[[mesh]] #1", "key 'file'", "a mesh that particles can reach", "spans [", ", 5, "});
+  refused(edited("translate = [0.0, 0.0, 0.0]", "translate = [0.0, -0.059, 0.0]"), {"no triangle comes within a particle diameter (0.008 m)"});
+  BOOST_TEST(rejection([&] { parse_scene(edited("translate = [0.0, 0.0, 0.0]", "translate = [0.0, -0.057, 0.0]"), "ok.toml"); }) == "(accepted)");
+  BOOST_TEST(rejection([&] {
+    parse_scene(edited("translate = [0.0, 0.0, 0.0]", "translate = [0.0, 5.0, 0.0]\nmotion = { kind = \"translation\", velocity = [0, -1, 0] }"), "ok.toml");
+  }) == "(accepted)");
+  {
+    std::string far = kWallFloor;  // the floor as a [[wall]], 20 cm beside the domain (x in [-0.1, 0.1])
+    const std::string up = "[[-0.08, 0, -0.08], [-0.08, 0, 0.08], [0.08, 0, 0.08], [0.08, 0, -0.08]]";
+    far.replace(far.find(up), up.size(), "[[0.3, 0, -0.08], [0.3, 0, 0.08], [0.4, 0, 0.08], [0.4, 0, -0.08]]");
+    refused(floor_scene(far), {"[[wall]] #1", "key 'vertices'", "a polygon that particles can reach"});
+  }
   // a particle across the mesh, and one into it
   const std::string across = floor_scene(block, "[[particles]]\ntype = \"bead\"\npositions = [[0.002, -0.001, 0.003]]\n");
   const std::string into = floor_scene(block, "[[particles]]\ntype = \"bead\"\npositions = [[0.002, 0.003, 0.003]]\n");

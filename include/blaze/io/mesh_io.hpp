@@ -177,9 +177,16 @@ inline TriangleMesh read_mesh_file(const std::string& path) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (is_binary_stl(bytes)) return parse_binary_stl(bytes, path);
   const std::size_t first = bytes.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos || bytes.compare(first, 5, "solid") != 0)
-    throw MeshError(path + ": neither a binary STL (84 + 50 n bytes for n triangles; this file has " + std::to_string(bytes.size()) +
-                    ") nor an ASCII one (starting with 'solid')");
+  if (first == std::string::npos || bytes.compare(first, 5, "solid") != 0) {
+    // A binary STL's header count against its size: a file cut short (a failed copy) says so.
+    std::string binary = "84 + 50 n bytes for n triangles; this file has " + std::to_string(bytes.size());
+    if (bytes.size() >= 84) {
+      const std::uint64_t n = mesh_io_detail::binary_count(bytes), want = 84 + 50 * n;
+      binary += ", and its header announces " + std::to_string(n) + " triangles, " + std::to_string(want) + " bytes: " +
+                (want > bytes.size() ? "truncated, or not an STL" : "bytes past the last triangle, or not an STL");
+    }
+    throw MeshError(path + ": neither a binary STL (" + binary + ") nor an ASCII one (starting with 'solid')");
+  }
   std::istringstream text(bytes);
   return parse_ascii_stl(text, path);
 }
