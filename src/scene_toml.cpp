@@ -1120,6 +1120,27 @@ void check_mill_period(Fields& f, const Scene& s, const MillSpec& m) {
     f.fail(*f.get("end_plates"), "end_plates", "true: a drum without end plates needs its axis along a periodic axis of the domain (x, y or z)");
 }
 
+// The drum inside the domain along every axis that is not periodic: its charge lies within the
+// shell and the end plates, and a particle that leaves the domain is removed, so a drum reaching
+// past a face would lose the balls that go there (a drum of 5 m in a domain of 1 m ran, its
+// charge falling through the domain's floor). Its box: centre +- (L/2 |a_d| + R sqrt(1 - a_d^2)).
+void check_mill_inside(Fields& f, const Scene& s, const MillSpec& m) {
+  const double a[3] = {m.axis.x, m.axis.y, m.axis.z}, c[3] = {m.centre.x, m.centre.y, m.centre.z};
+  const double lo[3] = {s.domain_lo.x, s.domain_lo.y, s.domain_lo.z}, hi[3] = {s.domain_hi.x, s.domain_hi.y, s.domain_hi.z};
+  for (int d = 0; d < 3; ++d) {
+    if ((s.periodic >> d) & 1u) continue;  // a slice's ends: check_mill_period
+    const double h = 0.5 * m.length * std::fabs(a[d]) + 0.5 * m.diameter * std::sqrt(std::fmax(0.0, 1 - a[d] * a[d]));
+    const double slack = 1e-9 * (hi[d] - lo[d]);
+    if (c[d] - h < lo[d] - slack || c[d] + h > hi[d] + slack) {
+      // too big for the domain: its size; else where it stands
+      const char* key = 2 * h > hi[d] - lo[d] + 2 * slack ? (std::fabs(a[d]) > 0.5 ? "length" : "diameter") : "centre";
+      f.fail(*f.get(key), key, std::string("a drum inside the domain (particles that leave it are removed): along ") + "xyz"[d] + " it spans " +
+                                   Scene::shortest(c[d] - h) + " to " + Scene::shortest(c[d] + h) + " m, the domain " + Scene::shortest(lo[d]) +
+                                   " to " + Scene::shortest(hi[d]) + " m");
+    }
+  }
+}
+
 // [mill] (include/blaze/scene/mill_geometry.hpp): a drum shell, end plates and lifter rows, all
 // turning together, added to the scene's cylinders and walls.
 void read_mill(const toml::table& root, const std::string& file, Scene& s) {
@@ -1144,6 +1165,7 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
   m.ramp = f.number_or("ramp_time", 0, non_negative("s"));
   m.end_plates = f.boolean_or("end_plates", true);
   check_mill_period(f, s, m);
+  check_mill_inside(f, s, m);
   const double r = 0.5 * m.diameter;
   if (const toml::node* rows = f.get("lifters")) {
     const toml::array* list = rows->as_array();

@@ -306,7 +306,7 @@ spacing = 2.5e-3
   refused("periodic = [\"y\"]", "[0.02, 0.005, 0.02]", {"periodic.toml:9", "key 'periodic'", "along y", "less than 3 cells"});
   // a [mill] slice: the drum along the periodic axis, without end plates, reaching past the faces
   const auto mill = [](const std::string& keys) {
-    return "[mill]\nmaterial = \"glass\"\ncentre = [0.01, 0.01, 0.01]\ndiameter = 0.03\nrpm = 10\n" + keys + "\n";
+    return "[mill]\nmaterial = \"glass\"\ncentre = [0.01, 0.01, 0.01]\ndiameter = 0.02\nrpm = 10\n" + keys + "\n";  // the domain's width
   };
   const auto with_mill = [&](const std::string& periodic, const std::string& keys) {
     return scene(periodic, "[0.02, 0.02, 0.02]") + mill(keys);

@@ -273,11 +273,16 @@ BOOST_AUTO_TEST_CASE(wall_motions_are_read_and_bad_ones_named) {
 
 // [mill]: a shell, two end plates and the lifter rows, all turning at the mill's speed; bad mill
 // input (a lifter taller than the radius, an axis of zero length, rows that do not fit around the
-// shell, a lean that closes the bar, both rpm and omega) named with file, line and key.
+// shell, a lean that closes the bar, both rpm and omega, a drum reaching past the domain: its
+// balls would leave it) named with file, line and key.
 BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
-  const std::string mill = "[mill]\nmaterial = \"steel\"\ncentre = [5, 5, 5]\naxis = [0, 0, 1]\ndiameter = 0.9\nlength = 0.15\n"
+  const std::string mill = "[mill]\nmaterial = \"steel\"\ncentre = [0, 0, 0]\naxis = [0, 0, 1]\ndiameter = 0.9\nlength = 0.15\n"
                            "rpm = 32\nramp_time = 0.5\nlifters = [{ count = 8, height = 0.04, width = 0.04 }]\n";
-  const Scene s = parse_scene(kBase + mill, "scene.toml");
+  std::string base = kBase;  // a domain that holds the drum: 1 m across its axis, 0.2 m along it
+  const std::string domain = "domain_lo = [-0.1, -0.1, -0.1]\ndomain_hi = [0.1, 0.1, 0.1]";
+  BOOST_TEST_REQUIRE(base.find(domain) != std::string::npos);
+  base.replace(base.find(domain), domain.size(), "domain_lo = [-0.5, -0.5, -0.1]\ndomain_hi = [0.5, 0.5, 0.1]");
+  const Scene s = parse_scene(base + mill, "scene.toml");
   BOOST_TEST_REQUIRE(s.cylinders.size() == 1u);
   BOOST_TEST(s.cylinders[0].radius == 0.45);
   BOOST_TEST(s.walls.size() == 1u + 2u + 3u * 8u);  // the base scene's floor, the end plates, 8 bars of 3 faces
@@ -301,11 +306,14 @@ BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
       {"rpm = 32", "rpm = 32\nomega = 3", "key 'omega' = 3", "not both (rpm is given too)"},
       {"diameter = 0.9", "diameter = -0.9", "key 'diameter' = -0.9", "must be in (0, 1e+09] m"},
       {"rpm = 32", "rpms = 32", "unknown key 'rpms'", "allowed: material, centre"},
+      {"diameter = 0.9", "diameter = 1.2", "key 'diameter' = 1.2", "a drum inside the domain (particles that leave it are removed): along x it spans -0.6 to 0.6 m, the domain -0.5 to 0.5 m"},
+      {"length = 0.15", "length = 0.3", "key 'length' = 0.3", "along z it spans -0.15 to 0.15 m, the domain -0.1 to 0.1 m"},
+      {"centre = [0, 0, 0]", "centre = [0.1, 0, 0]", "key 'centre' = [0.1, 0, 0]", "along x it spans -0.35 to 0.55 m"},
   };
   for (const Bad& c : bad) {
     std::string m2 = mill;
     m2.replace(m2.find(c.from), std::string(c.from).size(), c.to);
-    const std::string text = kBase + m2;
+    const std::string text = base + m2;
     const std::string msg = rejection([&] { parse_scene(text, "scene.toml"); });
     // the key's line: that of the replacement's last line (the lifters' table for its keys)
     const std::string to = c.to;
