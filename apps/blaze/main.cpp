@@ -129,6 +129,12 @@ int main(int argc, char** argv) try {
               100 * s.impact_overlap, s.overlap_governing.c_str(),
               s.impact_overlap > s.output.penetration_warning ? ", above penetration_warning" : "");
   for (const auto& note : s.notes) std::printf("%s\n", note.c_str());
+  if (!s.study.empty()) {  // read by the study programs (study_mill, study_hopper), not here
+    std::string keys;
+    for (const auto& v : s.study) keys += (keys.empty() ? "" : ", ") + v.key;
+    std::printf("note: %s: [study] (%s) is for the study programs (study_mill, study_hopper: the power averaged over "
+                "revolutions, the gate, the discharge); blaze run does not read it\n", s.study.front().where.c_str(), keys.c_str());
+  }
   // Derived sizes against this machine, before anything is allocated (run_size.hpp).
   const RunSize size = run_size(s, gpu_build);
   const double host_free = available_memory(Host{});
