@@ -18,6 +18,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 #include "blaze/scene/critical_step.hpp"
 #include "blaze/scene/run_size.hpp"
 #include "blaze/scene/scene_file.hpp"
@@ -631,12 +632,18 @@ std::string shown_vec(const Vec3<double>& v);
 // False when the polygon's box misses the domain grown by `margin`, or its plane passes the grown
 // domain by (the box's separating axes and the plane's; without the edges' cross axes the test
 // may answer true for a polygon that misses, never false for one that reaches).
-bool reaches_domain(const Scene& s, const Vec3<double>* v, std::size_t n, double margin) {
-  const Vec3<double> lo = s.domain_lo - Vec3<double>{margin, margin, margin}, hi = s.domain_hi + Vec3<double>{margin, margin, margin};
+// The box of points v[0, n) (n >= 1): {lowest, highest} corner.
+std::pair<Vec3<double>, Vec3<double>> bounds(const Vec3<double>* v, std::size_t n) {
   Vec3<double> a = v[0], b = v[0];
   for (std::size_t i = 1; i < n; ++i)
     a = {std::fmin(a.x, v[i].x), std::fmin(a.y, v[i].y), std::fmin(a.z, v[i].z)},
     b = {std::fmax(b.x, v[i].x), std::fmax(b.y, v[i].y), std::fmax(b.z, v[i].z)};
+  return {a, b};
+}
+
+bool reaches_domain(const Scene& s, const Vec3<double>* v, std::size_t n, double margin) {
+  const Vec3<double> lo = s.domain_lo - Vec3<double>{margin, margin, margin}, hi = s.domain_hi + Vec3<double>{margin, margin, margin};
+  const auto [a, b] = bounds(v, n);
   if (a.x > hi.x || a.y > hi.y || a.z > hi.z || b.x < lo.x || b.y < lo.y || b.z < lo.z) return false;
   Vec3<double> normal{0, 0, 0};
   for (std::size_t i = 1; i + 1 < n; ++i) normal = normal + cross(v[i] - v[0], v[i + 1] - v[0]);
@@ -646,7 +653,8 @@ bool reaches_domain(const Scene& s, const Vec3<double>* v, std::size_t n, double
 }
 
 // A still object no particle can reach (every part of it beyond a particle diameter from the
-// domain, where particles are removed) is a placement mistake: a mesh in mm read as m, a sign.
+// domain, where particles are removed) is a placement mistake: a sign in translate, often a mesh
+// in mm read as m.
 // A moving one may come in later and is let be.
 double reach_margin(const Scene& s) {
   double largest = 0;
@@ -1064,9 +1072,7 @@ void read_meshes(const toml::table& root, const std::string& file, Scene& s) {
     m.motion = read_motion(f, file, label, prefix, s);
     if (!m.motion.moves()) {
       bool reaches = false;
-      Vec3<double> a = m.mesh.vertices.empty() ? Vec3<double>{} : m.mesh.vertices[0], b = a;
-      for (const auto& v : m.mesh.vertices)
-        a = {std::fmin(a.x, v.x), std::fmin(a.y, v.y), std::fmin(a.z, v.z)}, b = {std::fmax(b.x, v.x), std::fmax(b.y, v.y), std::fmax(b.z, v.z)};
+      const auto [a, b] = bounds(m.mesh.vertices.data(), m.mesh.vertices.size());  // load_mesh: at least one triangle
       for (const auto& t : m.mesh.triangles) {
         const Vec3<double> tri[3] = {m.mesh.vertices[t[0]], m.mesh.vertices[t[1]], m.mesh.vertices[t[2]]};
         if ((reaches = reaches_domain(s, tri, 3, reach_margin(s)))) break;
