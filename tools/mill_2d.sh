@@ -13,6 +13,7 @@
 # plots/fig-mill-2d.png. 2916 balls against 99 world objects: a GPU run (about 1.3e6 steps per
 # case); on 2 CPU cores the world kernel makes it hours.
 # Usage: tools/mill_2d.sh STUDY_BINARY [DIR]        (DIR defaults to data/mill/mill_2d)
+#        MILL2D_JOBS=N runs N cases at a time (default: the number of cores, one OpenMP thread each)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$1 dir=${2:-data/mill/mill_2d}
@@ -25,11 +26,25 @@ gpu_mu060|--set pair[0].friction=0.60
 gpu_mu040|--set pair[0].friction=0.40
 gpu_tuned|--set pair[0].friction=0.40 --set pair[0].restitution=0.65"
 args="n=5; cols=3; out='plots/fig-mill-2d.png'; R=2.58; h=0.025; vs=0.05; every=8"
+# the cases run side by side, MILL2D_JOBS at a time (default: one per core, one OpenMP thread each)
+jobs=${MILL2D_JOBS:-$(nproc)}
+threads=$(( $(nproc) / jobs > 0 ? $(nproc) / jobs : 1 ))
+run_case() {  # NAME SETS
+  eval "OMP_NUM_THREADS=$threads \"$bin\" studies/mill/mill_2d.toml $2 --set output.directory=$dir/$1" > "$dir/$1.log" 2>&1
+}
+pids=() names=()
+while IFS='|' read -r name sets; do
+  while (( $(jobs -rp | wc -l) >= jobs )); do wait -n || true; done
+  run_case "$name" "$sets" &
+  pids+=($!) names+=("$name")
+  echo "mill 2d: $name started ($threads thread(s); log $dir/$name.log)"
+done <<< "$cases"
+for i in "${!pids[@]}"; do
+  wait "${pids[$i]}" || { echo "mill 2d: ${names[$i]} failed (see $dir/${names[$i]}.log)"; exit 1; }
+done
 k=0
 while IFS='|' read -r name sets; do
   k=$((k + 1))
-  eval "\"$bin\" studies/mill/mill_2d.toml $sets --set output.directory=$dir/$name" > "$dir/$name.log" 2>&1 ||
-    { echo "mill 2d: $name failed (see $dir/$name.log)"; exit 1; }
   m="$dir/$name/manifest.txt"
   val() { sed -n "s/^$1 = //p" "$m"; }
   echo "$name,$(val toe_deg),$(val shoulder_deg),$(val power_W),$(val energy_method_W),$(val wall_time_s)" >> "$out"
