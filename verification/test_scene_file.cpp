@@ -15,6 +15,7 @@
 #include "blaze/scene/scene_identity.hpp"
 #include "pipeline/scene_law.hpp"
 #include "pipeline/simulation.hpp"
+#include "studies/mill/mill_run.hpp"
 #include "verification/tolerances.hpp"
 
 using namespace blaze;
@@ -355,6 +356,49 @@ BOOST_AUTO_TEST_CASE(friction_without_tangential_damping_takes_eq_4_3) {
     const Scene sc = parse_scene(edit("friction = 0.3", std::string("friction = 0.3\ntangential_damping = ") + kt), "scene.toml");
     BOOST_TEST(sc.pairs[0].tangential_rate == 0.0);
     BOOST_TEST(note_of(sc).empty());
+  }
+}
+
+// study_mill's span (studies/mill/mill_run.hpp): a run ending before its first averaged
+// revolution wrote a power of 0 W from no revolution at all (found by an adversarial pass,
+// 2026-12-07). Over speeds, ramps and skipped revolutions: an end_time just short of the ramp plus
+// skip + 1 revolutions is refused naming end_time and the least that holds one; that least is
+// accepted; a fractional skip_revolutions is refused.
+BOOST_AUTO_TEST_CASE(a_mill_study_too_short_to_average_a_revolution_is_refused) {
+  const auto load = [](double rpm, double ramp, double skip, double end) {
+    return load_scene("studies/mill/lab_mill.toml", {"mill.rpm=" + std::to_string(rpm), "mill.ramp_time=" + std::to_string(ramp),
+                                                     "study.skip_revolutions=" + std::to_string(skip),
+                                                     "simulation.end_time=" + std::to_string(end)});
+  };
+  int cases = 0;
+  for (const double rpm : {14.0, 32.0, 93.3})
+    for (const double ramp : {0.0, 0.5})
+      for (const int skip : {0, 1, 3}) {
+        const double least = ramp + (skip + 1) * 60 / rpm;
+        const mill::MillSpan span = mill::mill_span(load(rpm, ramp, skip, least * (1 + 1e-6)));
+        BOOST_TEST(std::fabs(span.first_averaged_end() - least) < 1e-12 * least);
+        try {
+          mill::mill_span(load(rpm, ramp, skip, least * (1 - 1e-3)));
+          BOOST_ERROR("a run ending before its first averaged revolution was accepted: rpm " << rpm << ", skip " << skip);
+        } catch (const SceneError& e) {
+          const std::string m = e.what();
+          BOOST_TEST(m.find("command line (--set): [simulation]: key 'end_time'") != std::string::npos, m);
+          BOOST_TEST(m.find("end_time must be at least") != std::string::npos, m);
+        }
+        ++cases;
+      }
+  BOOST_TEST(cases == 18);
+  try {  // the file's own end_time (10 s) against 14 rpm and two revolutions skipped (13.4 s needed)
+    mill::mill_span(load_scene("studies/mill/lab_mill.toml", {"mill.rpm=14", "study.skip_revolutions=2"}));
+    BOOST_ERROR("the lab mill's 10 s at 14 rpm with two revolutions skipped was accepted");
+  } catch (const SceneError& e) {
+    BOOST_TEST(std::string(e.what()).find("lab_mill.toml:13: [simulation]: key 'end_time' = 10 s") != std::string::npos, e.what());
+  }
+  try {
+    mill::mill_span(load(32, 0.5, 1.5, 10));
+    BOOST_ERROR("a fractional skip_revolutions was accepted");
+  } catch (const SceneError& e) {
+    BOOST_TEST(std::string(e.what()).find("skip_revolutions' = 1.5") != std::string::npos, e.what());
   }
 }
 

@@ -60,15 +60,44 @@ template <class Sim>
 auto charge_state(DistributedSimulation<Sim>& sim) { return sim.gathered_state(); }
 #endif
 
+// The revolutions the study averages: the drum reaches full speed at `first` (its start plus its
+// ramp, s), `skip` revolutions of `period` (s) settle the charge, and every whole revolution
+// after them up to end_time is averaged.
+struct MillSpan {
+  double period = 0, first = 0, skip = 0;
+  double first_averaged_end() const { return first + (skip + 1) * period; }  // s
+};
+
+// The scene's span; refuses a mill that does not turn and an end_time that ends before the first
+// averaged revolution (which would write a power of 0 W from no revolution at all), naming the
+// key and the least end_time that holds one.
+inline MillSpan mill_span(const Scene& s) {
+  if (!s.mill.present || s.mill.omega == 0) throw SceneError(s.path + ": the mill study needs a [mill] that turns");
+  MillSpan m;
+  m.skip = s.study_value("skip_revolutions", 0, 1000, "revolutions settled before the power is averaged");
+  for (const auto& v : s.study)
+    if (v.key == "skip_revolutions" && m.skip != std::floor(m.skip))
+      throw SceneError(v.where + ": [study]: key 'skip_revolutions' = " + Scene::shortest(m.skip) + ": must be a whole number of revolutions");
+  m.period = 2 * 3.14159265358979323846 / std::fabs(s.mill.omega);
+  m.first = s.mill.start + s.mill.ramp;  // revolutions count from full speed
+  if (s.end_time + 1e-12 < m.first_averaged_end()) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  " = %.6g s holds no revolution to average: the drum reaches full speed at %.6g s, a revolution takes "
+                  "%.6g s and [study] skip_revolutions = %.0f settle the charge; end_time must be at least %.6g s",
+                  s.end_time, m.first, m.period, m.skip, m.first_averaged_end());
+    throw SceneError(s.place("simulation.end_time") + buf);
+  }
+  return m;
+}
+
 // The study on a Simulation, or over ranks on a DistributedSimulation (`root`: the rank that
 // writes; every rank runs the same loop, whose samples and counts are collective).
 template <class Real, class Kinematics, class Run>
 int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
-  if (!s.mill.present || s.mill.omega == 0) throw SceneError(s.path + ": the mill study needs a [mill] that turns");
-  const double skip = s.study_value("skip_revolutions", 0, 1000, "revolutions settled before the power is averaged");
+  const MillSpan span = mill_span(s);
   s.check_study_used();
-  const double period = 2 * 3.14159265358979323846 / std::fabs(s.mill.omega);
-  const double first = s.mill.start + s.mill.ramp;  // revolutions count from full speed
+  const double period = span.period, first = span.first, skip = span.skip;
   double r_max = 0;
   for (const auto& t : s.types) r_max = std::max(r_max, t.size());
   std::printf("mill: %zu balls, D = %.3g m, L = %.3g m, %.4g rpm (T = %.4g s), dt = %.3g s (%.3f of the critical step)\n"
@@ -183,6 +212,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
 template <class Law, class Kinematics>
 int run_mill(const Scene& s, const Communicator* comm = nullptr) {
   using Real = typename Law::real_type;  // the study's own sums are double
+  mill_span(s);  // before the charge is built: a run too short to average a revolution is refused
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, Kinematics, MillStudyFeatures>;
   SimulationParams<Real> sp = simulation_params<Real>(s);
   if (comm) sp.pairs = PairEvaluation::both_sides, sp.canonical_order = true;
