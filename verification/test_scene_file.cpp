@@ -359,6 +359,41 @@ BOOST_AUTO_TEST_CASE(friction_without_tangential_damping_takes_eq_4_3) {
   }
 }
 
+// The output folder (make_output_directory, used by blaze run and the study programs): a folder
+// path through a file, or a file in the folder's place, was a bare filesystem error naming no key
+// (an adversarial pass, 2026-12-07); it is a SceneError naming output.directory with its line.
+// A folder that can be made is made, with `sub` inside it.
+BOOST_AUTO_TEST_CASE(an_output_folder_that_cannot_be_made_is_named) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / "blaze_output_folder_test";
+  fs::remove_all(root);
+  fs::create_directories(root);
+  std::ofstream(root / "a_file") << "x";
+  const auto scene_at = [&](const fs::path& dir) {
+    std::string text = kBase;
+    const std::string line = "directory = \"/tmp/blaze_scene_test\"";
+    BOOST_TEST_REQUIRE(text.find(line) != std::string::npos);
+    text.replace(text.find(line), line.size(), "directory = \"" + dir.string() + "\"");
+    return parse_scene(text, "scene.toml");
+  };
+  for (const fs::path& bad : {root / "a_file", root / "a_file" / "sub"})
+    for (const std::string sub : {"", "vtu"}) {
+      try {
+        make_output_directory(scene_at(bad), sub);
+        BOOST_ERROR("an output folder through a file was made: " << bad);
+      } catch (const SceneError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(m.find("scene.toml:12: [output]: key 'directory'") != std::string::npos, m);  // kBase's line 12
+        BOOST_TEST(m.find("cannot create the folder") != std::string::npos, m);
+      }
+    }
+  const fs::path good = root / "made" / "here";
+  BOOST_TEST(make_output_directory(scene_at(good), "vtu") == (good / "vtu").string());
+  BOOST_TEST(fs::is_directory(good / "vtu"));
+  BOOST_TEST(make_output_directory(scene_at(good)) == good.string());  // an existing folder is fine
+  fs::remove_all(root);
+}
+
 // study_mill's span (studies/mill/mill_run.hpp): a run ending before its first averaged
 // revolution wrote a power of 0 W from no revolution at all (found by an adversarial pass,
 // 2026-12-07). Over speeds, ramps and skipped revolutions: an end_time just short of the ramp plus

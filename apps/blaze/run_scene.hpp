@@ -125,7 +125,7 @@ int drive(Run& sim, const Scene& s, const Options& o, const World<Real>& world, 
                           " s: give an end_time after the checkpoint's time (--set end_time=...)");
 
   const std::string& dir = s.output.directory;
-  std::filesystem::create_directories(dir + "/vtu");
+  make_output_directory(s, "vtu");
   const auto steps = static_cast<std::uint64_t>(std::llround(s.end_time / s.dt));  // <= kMaxSteps (validated)
   const auto every = [&](double interval) { return interval_steps(interval, s.dt, steps); };
   const std::uint64_t csv_every = every(s.output.csv_interval), vtu_every = every(s.output.vtu_interval);

@@ -160,7 +160,7 @@ int drive_hopper(Run& sim, const Scene& s, const HopperKeys& h, std::vector<Feed
                  const HopperRunOptions& opt = {}, const std::string& identity = "", const std::string& saved = "") {
   constexpr bool polyhedra = !std::is_same_v<Shape, SphereShape>;
   const std::string dir = s.output.directory;
-  if (root) std::filesystem::create_directories(dir + "/vtu");
+  if (root) make_output_directory(s, "vtu");
   DischargeRecord record;
   HopperLoopState loop;
   const bool resumed = !saved.empty();

@@ -152,8 +152,7 @@ int run(const Scene& s, const ReposeSetup& g, const std::vector<std::string>& ov
               "the critical %.3g s)\nbackend: %s, %s\n",
               initial.size(), g.d, g.r_in, g.r_in / g.d, s.pairs[0].friction, s.pairs[0].rolling_friction, s.dt,
               s.dt / s.dt_critical, s.dt_critical, DefaultSpace::name, device_name(DefaultSpace{}).c_str());
-  const std::string dir = s.output.directory;
-  std::filesystem::create_directories(dir);
+  const std::string dir = make_output_directory(s);
   const auto t0 = std::chrono::steady_clock::now();
   std::uint64_t particle_steps = 0;
   const auto steps = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / s.dt)); };
@@ -236,7 +235,7 @@ int measure_dump(const Scene& s, const ReposeSetup& g, const std::string& dump, 
     if (ss >> id >> a >> b >> c >> rad) x.push_back(a), y.push_back(b), z.push_back(c), r.push_back(rad);
   }
   if (x.empty()) throw SceneError(dump + ": no 'ITEM: ATOMS id x y z radius' section");
-  std::filesystem::create_directories(s.output.directory);
+  make_output_directory(s);
   auto cols = report(measure_repose(x, y, z, r, g.measure()), g, s.output.directory, "liggghts", on_base(y));
   cols["liggghts_particles"] = std::to_string(g.particles);
   if (wall > 0) cols["liggghts_wall_s"] = std::to_string(static_cast<long>(std::lround(wall)));

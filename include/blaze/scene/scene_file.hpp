@@ -8,7 +8,9 @@
 // builds: nvcc cannot compile toml++), so this header has no TOML in it. README.md documents the
 // format with a complete annotated example (data/scenes/drop.toml).
 #pragma once
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 #include "blaze/scene/scene.hpp"
 
@@ -23,5 +25,19 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 
 // The same for scene text already in memory (`name` stands for the file in messages).
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
+
+// Creates the run's output directory ([output] directory, with `sub` inside it when given) and
+// returns its path. One that cannot be made (a file where a folder of the path should be, no
+// permission) is a SceneError naming output.directory, the path and why, before any file is written.
+inline std::string make_output_directory(const Scene& s, const std::string& sub = "") {
+  const std::string dir = sub.empty() ? s.output.directory : s.output.directory + "/" + sub;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!ec && !std::filesystem::is_directory(dir, ec) && !ec) ec = std::make_error_code(std::errc::not_a_directory);
+  if (ec)
+    throw SceneError(s.place("output.directory") + " = \"" + s.output.directory + "\": cannot create the folder " + dir + ": " +
+                     ec.message() + "; give a folder that can be made here");
+  return dir;
+}
 
 }  // namespace blaze
