@@ -105,7 +105,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
               static_cast<std::size_t>(balls), s.mill.diameter, s.mill.length, s.mill.omega * 60 / (2 * 3.14159265358979323846), period, s.dt,
               s.dt / s.dt_critical, DefaultSpace::name, device_name(DefaultSpace{}).c_str());
   const std::string dir = s.output.directory;
-  if (root) std::filesystem::create_directories(dir);
+  if (root) make_output_directory(s);
   std::ofstream csv(root ? dir + "/power.csv" : std::string("/dev/null"));  // (every rank runs the loop)
   csv << "revolution,t_end_s,power_W,energy_method_W,thesis_estimate_W,pair_W,shell_W,lifter_W,end_plate_W,wall_W,kinetic_J,dissipated_J,"
          "drive_work_J,balls,toe_deg,shoulder_deg,centrifuging_balls,centrifuging_layers,wall_s\n";
@@ -182,9 +182,11 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
   std::printf("power %.2f W by the torque method, %.2f W by the energy method (mean of %d revolutions after %g; ratio %.4f); "
               "the thesis's estimate %.2f W\n"
               "dissipated: ball-ball %.1f%%, ball-shell %.1f%%, ball-lifter %.1f%%, ball-end plate %.1f%%, other walls %.1f%%\n"
-              "deepest penetration %.3g%% of the radius; %d balls left; wall time %.1f s, %.4g steps/s\n",
+              "deepest penetration %.3g%% of the radius%s; %d balls left; wall time %.1f s, %.4g steps/s\n",
               mean, mean_energy, averaged, skip, mean > 0 ? mean_energy / mean : 0.0, mean_thesis, share(0), share(shell), share(lifter),
-              share(plate), share(other), 100 * worst, static_cast<int>(sim.size()), wall,
+              share(plate), share(other), 100 * worst,
+              worst > s.output.penetration_warning ? " (ABOVE output.penetration_warning: the contacts are soft for these impacts)" : "",
+              static_cast<int>(sim.size()), wall,
               static_cast<double>(sim.steps()) / wall);
   std::map<std::string, std::string> m;
   char b[64];
@@ -198,6 +200,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
   m["kinematics"] = std::is_same_v<Kinematics, ThesisMeanOmegaVelocity> ? "thesis mean omega" : "contact point";
   m["revolutions_averaged"] = std::to_string(averaged), m["rpm"] = num(s.mill.omega * 60 / (2 * 3.14159265358979323846));
   m["balls"] = std::to_string(balls), m["dt_s"] = num(s.dt), m["wall_time_s"] = num(wall);
+  m["deepest_penetration"] = num(worst), m["penetration_warning"] = num(s.output.penetration_warning);  // overlap / radius
   m["steps_per_s"] = num(static_cast<double>(sim.steps()) / wall);
   m["centrifuging_balls"] = std::to_string(spun.balls), m["centrifuging_layers"] = std::to_string(spun.layers);
   m["toe_deg"] = num(profiles ? toe_sum / profiles : 0), m["shoulder_deg"] = num(profiles ? shoulder_sum / profiles : 0);
