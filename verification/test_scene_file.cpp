@@ -15,6 +15,7 @@
 #include "blaze/scene/scene_identity.hpp"
 #include "pipeline/scene_law.hpp"
 #include "pipeline/simulation.hpp"
+#include "studies/hopper/hopper_run.hpp"
 #include "studies/mill/mill_run.hpp"
 #include "verification/tolerances.hpp"
 
@@ -392,6 +393,30 @@ BOOST_AUTO_TEST_CASE(an_output_folder_that_cannot_be_made_is_named) {
   BOOST_TEST(fs::is_directory(good / "vtu"));
   BOOST_TEST(make_output_directory(scene_at(good)) == good.string());  // an existing folder is fine
   fs::remove_all(root);
+}
+
+// study_hopper's keys (studies/hopper/hopper_run.hpp): a gate opening at the run's end (no
+// discharge at all) and an orifice column of zero width (no particle ever over it: no arch found,
+// no flow pattern) ran silently (an adversarial pass, 2026-12-07); both are refused with the key.
+BOOST_AUTO_TEST_CASE(a_hopper_study_with_no_discharge_or_no_orifice_is_refused) {
+  const auto keys = [](const std::vector<std::string>& set) { return hopper::HopperKeys(load_scene("studies/hopper/hopper.toml", set)); };
+  const auto refused = [&](const std::vector<std::string>& set, const std::string& key) {
+    try {
+      keys(set);
+      BOOST_ERROR("accepted: " << set.front());
+    } catch (const SceneError& e) {
+      BOOST_TEST(std::string(e.what()).find("[study]: key '" + key + "'") != std::string::npos, e.what());
+    }
+  };
+  for (const double end : {1.0, 3.0}) {  // the gate at the end, or past it, is refused; just before it runs
+    const std::string e = "simulation.end_time=" + std::to_string(end);
+    refused({"study.gate_open_time=" + std::to_string(end), e}, "gate_open_time");
+    refused({"study.gate_open_time=" + std::to_string(end + 1), e}, "gate_open_time");
+    BOOST_TEST(keys({"study.gate_open_time=" + std::to_string(0.9 * end), e}).gate_open == 0.9 * end);
+  }
+  refused({"study.orifice_half_width=0"}, "orifice_half_width");
+  refused({"study.orifice_half_width=-0.01"}, "orifice_half_width");
+  BOOST_TEST(keys({"study.orifice_half_width=0.001"}).orifice == 0.001);
 }
 
 // study_mill's span (studies/mill/mill_run.hpp): a run ending before its first averaged

@@ -100,8 +100,8 @@ struct HopperKeys {
   double axis_x = 0;     // m, the orifice's centre line
   double arch_span = 0;  // s without an exit, particles over the orifice: an arch (0: off)
   explicit HopperKeys(const Scene& s)
-      : gate_open(s.study_value("gate_open_time", 0, s.end_time, "s (at most end_time)")),
-        orifice(s.study_value_or("orifice_half_width", 0, 10, "m (the flow pattern's centre column)", 0.025)),
+      : gate_open(s.study_value("gate_open_time", 0, s.end_time - s.dt, "s (before end_time: the discharge needs time)")),
+        orifice(s.study_value_or("orifice_half_width", 1e-6, 10, "m (the flow pattern's centre column and the arch test's span)", 0.025)),
         axis_x(s.study_value_or("orifice_x", -1e3, 1e3, "m (the orifice's centre line)", 0.0)),
         arch_span(s.study_value_or("arch_time", 0, 1e3, "s without a particle leaving, with some over the orifice (0: off)", 0.0)) {
     s.check_study_used();
