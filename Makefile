@@ -15,7 +15,7 @@
 #   make fig-repose        angle of repose, mu_s x mu_r (studies/repose; GPU if present); fig-repose-liggghts: LIGGGHTS side
 #   make table-4.4         the thesis's lab-mill power table (studies/mill), two contact laws -> studies/mill/table-4.4.md
 #   make fig-slice-mill    the slice mill's power and centrifuging layers against speed (studies/mill)
-#   make fig-mill-2d       the 2D mill's toe and shoulder against friction (thesis 4.1.5; GPU)
+#   make fig-mill-2d       the 2D mill's toe and shoulder against friction (thesis 4.1.5; 2 h on 2 cores)
 #   make los-bronces       the SAG mill of thesis 4.3: power per revolution and its split (GPU)
 #   make mill-scaling      the thesis's 4e6-ball scaling mill (4.3.1): one revolution's wall time (GPU)
 #   make fig-mill-work-precision  the lab mill's error against wall time over dt and precision
@@ -346,8 +346,8 @@ fig-2.17: deps
 # make fig-slice-mill: the slice mill of section 4.2.2 at 30-160% of critical speed -> data/mill/slice/,
 # studies/mill/slice-mill.md, plots/fig-slice-mill.png (tools/slice_mill.sh; ~10 minutes on 2 cores).
 # make fig-mill-2d: the 2D mill of section 4.1.5 (toe and shoulder against friction, Figures 4.3-4.4)
-# -> data/mill/mill_2d/, studies/mill/mill-2d.md, plots/fig-mill-2d.png (tools/mill_2d.sh; a GPU
-# target: 2916 balls against 99 world objects, ~1.3e6 steps per case).
+# -> data/mill/mill_2d/, studies/mill/mill-2d.md, plots/fig-mill-2d.png (tools/mill_2d.sh: five cases of
+# 1.3e6 steps of 2916 balls, side by side one a core; ~1 h 45 min on 2 CPU cores).
 # make fig-mill-work-precision: the 30% / 22 rpm lab mill's power and toe error against wall time
 # for dt = t_c/10 ... t_c/100, float and double, two laws -> data/mill/work_precision/,
 # studies/mill/work-precision.md, plots/fig-mill-work-precision.png (tools/mill_work_precision.sh).
