@@ -91,11 +91,10 @@ inline MillSpan mill_span(const Scene& s) {
   return m;
 }
 
-// The study on a Simulation, or over ranks on a DistributedSimulation (`root`: the rank that
-// writes; every rank runs the same loop, whose samples and counts are collective).
+// The study on a Simulation, or over ranks on a DistributedSimulation (`span`: mill_span's;
+// `root`: the rank that writes; every rank runs the same loop, whose samples and counts are collective).
 template <class Real, class Kinematics, class Run>
-int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
-  const MillSpan span = mill_span(s);
+int drive_mill(Run& sim, const Scene& s, const MillSpan& span, Index balls, bool root) {
   s.check_study_used();
   const double period = span.period, first = span.first, skip = span.skip;
   double r_max = 0;
@@ -215,7 +214,7 @@ int drive_mill(Run& sim, const Scene& s, Index balls, bool root) {
 template <class Law, class Kinematics>
 int run_mill(const Scene& s, const Communicator* comm = nullptr) {
   using Real = typename Law::real_type;  // the study's own sums are double
-  mill_span(s);  // before the charge is built: a run too short to average a revolution is refused
+  const MillSpan span = mill_span(s);  // before the charge is built: a run too short to average a revolution is refused
   using Sim = Simulation<DefaultSpace, SphereShape, Law, VelocityVerlet, Kinematics, MillStudyFeatures>;
   SimulationParams<Real> sp = simulation_params<Real>(s);
   if (comm) sp.pairs = PairEvaluation::both_sides, sp.canonical_order = true;
@@ -224,11 +223,11 @@ int run_mill(const Scene& s, const Communicator* comm = nullptr) {
 #if defined(BLAZE_MPI)
   if (comm && comm->size() > 1) {
     DistributedSimulation<Sim> run(*comm, sp, build_laws<Law>(s), build_world<Real>(s), balls, SphereShape{});
-    return drive_mill<Real, Kinematics>(run, s, n, comm->rank() == 0);
+    return drive_mill<Real, Kinematics>(run, s, span, n, comm->rank() == 0);
   }
 #endif
   Sim sim(sp, build_laws<Law>(s), build_world<Real>(s), balls);
-  return drive_mill<Real, Kinematics>(sim, s, n, true);
+  return drive_mill<Real, Kinematics>(sim, s, span, n, true);
 }
 
 
