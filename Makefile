@@ -281,7 +281,8 @@ endif
 # make fig-repose: the 3 x 3 sweep in Blaze -> REPOSE_DIR/<case>/, REPOSE_DIR/angles.csv,
 # plots/fig-repose.png (small) or plots/fig-repose-full.png. REPOSE_SIZE=full (default with a GPU: ~18 000 beads on a base of 25 d)
 # or small (default without: ~1 250 beads on 10 d, E = 1e7 Pa). make fig-repose-liggghts: the
-# same piles in LIGGGHTS on the CPU (REPOSE_LIGGGHTS_CASES, mu_s:mu_r), their angles beside Blaze's.
+# same piles in LIGGGHTS on the CPU (REPOSE_LIGGGHTS_CASES, mu_s:mu_r; at REPOSE_SIZE's size, into
+# REPOSE_DIR beside Blaze's cases), their angles beside Blaze's.
 REPOSE_SIZE ?= $(if $(and $(HAVE_GPU),$(NVCC)),full,small)
 REPOSE_MU_S ?= 0.2 0.4 0.6
 REPOSE_MU_R ?= 0 0.05 0.1
@@ -296,6 +297,8 @@ REPOSE_DIR := $(if $(filter full,$(REPOSE_SIZE)),data/repose/full,data/repose)
 # processes' contexts; 2026-12-02: each reached t = 0.95 s in 575 s, alone a pile takes ~93 s).
 REPOSE_JOBS ?= 1
 REPOSE_LIGGGHTS_CASES ?= 0.2:0.05 0.4:0.05 0.6:0.05
+# LIGGGHTS's MPI ranks (the full size: ~18 000 beads for ~4 s of settling, one case per core's hour or so)
+REPOSE_LIGGGHTS_CORES ?= 1
 .PHONY: fig-repose fig-repose-liggghts
 fig-repose: deps
 	@echo "fig-repose: backend = $(RUN_BACKEND), size = $(REPOSE_SIZE)"
@@ -306,9 +309,10 @@ fig-repose: deps
 	@echo "wrote $(REPOSE_DIR)/angles.csv, plots/fig-repose$(if $(filter full,$(REPOSE_SIZE)),-full).png"
 fig-repose-liggghts: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/study_repose
-	tools/repose_liggghts.sh --blaze $(BUILD)/cpu/study_repose $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS_small)
-	gnuplot -e "dir='data/repose'; size='small'" plots/repose.gp
-	@echo "wrote data/repose/angles.csv, plots/fig-repose.png"
+	tools/repose_liggghts.sh --cores $(REPOSE_LIGGGHTS_CORES) --blaze $(BUILD)/cpu/study_repose --dir $(REPOSE_DIR) \
+	  $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS)
+	gnuplot -e "dir='$(REPOSE_DIR)'; size='$(REPOSE_SIZE)'" plots/repose.gp
+	@echo "wrote $(REPOSE_DIR)/angles.csv, plots/fig-repose$(if $(filter full,$(REPOSE_SIZE)),-full).png"
 
 # ---- hopper discharge (studies/hopper) -------------------------------------------------------------
 # make fig-2.15 / fig-2.16: the hopper of thesis section 2.5.3 with 2000 spheres and 2000 dodecahedra,

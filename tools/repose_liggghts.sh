@@ -4,27 +4,30 @@
 # as root), case by case, and its angle measured by Blaze's own function, side by side with
 # Blaze's in data/repose/angles.csv.
 #
-#   tools/repose_liggghts.sh [--cores C] [--blaze PATH] [--keep] CASE... [-- --set key=value...]
+#   tools/repose_liggghts.sh [--cores C] [--blaze PATH] [--dir DIR] [--keep] CASE... [-- --set key=value...]
 #     CASE          mu_s:mu_r, e.g. 0.4:0.05
 #     --cores C     LIGGGHTS MPI ranks [1]
+#     --dir DIR     the sweep's folder, where Blaze's cases and angles.csv are [data/repose; the
+#                   full size's: data/repose/full]
 #     --blaze PATH  the study binary that exports and measures [build/cpu/study_repose]
 #     after --       overrides given to the study (the size: make fig-repose-liggghts passes REPOSE_SIZE's)
 #
 # Per case: `study_repose --export-liggghts` writes walls.stl, gate.stl, beads.data and params.txt
 # (the numbers of studies/repose/repose.toml with the overrides, 17 digits) into
-# data/repose/<case>/liggghts/; studies/repose/repose.liggghts.in is filled with them; LIGGGHTS
+# DIR/<case>/liggghts/; studies/repose/repose.liggghts.in is filled with them; LIGGGHTS
 # runs there; `study_repose --measure final.dump` fits the angle and writes the LIGGGHTS columns.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cores=1 blaze=build/cpu/study_repose keep=0
+cores=1 blaze=build/cpu/study_repose keep=0 top=data/repose
 cases=() sets=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --cores) cores=$2; shift 2 ;;
     --blaze) blaze=$2; shift 2 ;;
+    --dir) top=$2; shift 2 ;;
     --keep) keep=1; shift ;;
     --) shift; sets=("$@"); break ;;
-    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) cases+=("$1"); shift ;;
   esac
 done
@@ -45,7 +48,7 @@ fi
 
 for c in "${cases[@]}"; do
   mus=${c%%:*} mur=${c##*:}
-  dir=data/repose/mus${mus}_mur${mur}
+  dir=$top/mus${mus}_mur${mur}
   case_sets=("${sets[@]}" --set "pair[0].friction=$mus" --set "pair[1].friction=$mus"
              --set "pair[0].rolling_friction=$mur" --set "pair[1].rolling_friction=$mur" --set "output.directory=$dir")
   args=(); for s in "${case_sets[@]}"; do args+=("$s"); done
