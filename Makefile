@@ -292,6 +292,8 @@ REPOSE_SETS_small := --set base_radius=10 --set hopper_width=16 --set orifice=7 
 REPOSE_SETS := $(REPOSE_SETS_$(REPOSE_SIZE))
 # the small sweep's results in data/repose/ (beside LIGGGHTS's), the full one's in data/repose/full/
 REPOSE_DIR := $(if $(filter full,$(REPOSE_SIZE)),data/repose/full,data/repose)
+# the figure: REPOSE_DIR's angles, and make repose-scatter's other starts where they were run
+REPOSE_PLOT = gnuplot -e "dir='$(REPOSE_DIR)'; size='$(REPOSE_SIZE)'; more='$(wildcard $(REPOSE_DIR)-gap*/angles.csv)'" plots/repose.gp
 # cases at a time. 1 on a GPU as well: nine full-size piles sharing an H200 as nine processes
 # (no MPS) ran 2.7x slower in total than one after another (the GPU switches between the
 # processes' contexts; 2026-12-02: each reached t = 0.95 s in 575 s, alone a pile takes ~93 s).
@@ -305,14 +307,26 @@ fig-repose: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_repose
 	tools/repose_sweep.sh $(BUILD)/$(RUN_BACKEND)/study_repose $(REPOSE_DIR) $(REPOSE_JOBS) "$(REPOSE_MU_S)" "$(REPOSE_MU_R)" \
 	  -- $(REPOSE_SETS)
-	gnuplot -e "dir='$(REPOSE_DIR)'; size='$(REPOSE_SIZE)'" plots/repose.gp
+	$(REPOSE_PLOT)
 	@echo "wrote $(REPOSE_DIR)/angles.csv, plots/fig-repose$(if $(filter full,$(REPOSE_SIZE)),-full).png"
 fig-repose-liggghts: deps
 	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/cpu/study_repose
 	tools/repose_liggghts.sh --cores $(REPOSE_LIGGGHTS_CORES) --blaze $(BUILD)/cpu/study_repose --dir $(REPOSE_DIR) \
 	  $(REPOSE_LIGGGHTS_CASES) -- $(REPOSE_SETS)
-	gnuplot -e "dir='$(REPOSE_DIR)'; size='$(REPOSE_SIZE)'" plots/repose.gp
+	$(REPOSE_PLOT)
 	@echo "wrote $(REPOSE_DIR)/angles.csv, plots/fig-repose$(if $(filter full,$(REPOSE_SIZE)),-full).png"
+# make repose-scatter: the same piles from other starts (the bcc fill's free gap, REPOSE_SCATTER_GAPS,
+# instead of the scene's 0.05) for the cases near glass beads -> REPOSE_DIR-gap<digits>/ (0.02 ->
+# -gap02); the plot shows them as crosses: the pile-to-pile scatter the angles are read with.
+REPOSE_SCATTER_GAPS ?= 0.02 0.08
+REPOSE_SCATTER_CASES ?= 0.4:0.05 0.4:0.1 0.6:0.05 0.6:0.1
+.PHONY: repose-scatter
+repose-scatter: deps
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/$(RUN_BACKEND)/study_repose
+	@set -e; for g in $(REPOSE_SCATTER_GAPS); do for c in $(REPOSE_SCATTER_CASES); do \
+	  tools/repose_sweep.sh $(BUILD)/$(RUN_BACKEND)/study_repose $(REPOSE_DIR)-gap$${g#0.} 1 $${c%%:*} $${c##*:} \
+	    -- $(REPOSE_SETS) --set lattice_gap=$$g; done; done
+	$(REPOSE_PLOT)
 
 # ---- hopper discharge (studies/hopper) -------------------------------------------------------------
 # make fig-2.15 / fig-2.16: the hopper of thesis section 2.5.3 with 2000 spheres and 2000 dodecahedra,
