@@ -296,10 +296,11 @@ REPOSE_DIR := $(if $(filter full,$(REPOSE_SIZE)),data/repose/full,data/repose)
 REPOSE_PLOT = gnuplot -e "dir='$(REPOSE_DIR)'; size='$(REPOSE_SIZE)'; more='$(wildcard $(REPOSE_DIR)-gap*/angles.csv)'" plots/repose.gp
 # cases at a time. 1 on a GPU as well: nine full-size piles sharing an H200 as nine processes
 # (no MPS) ran 2.7x slower in total than one after another (the GPU switches between the
-# processes' contexts; 2026-12-02: each reached t = 0.95 s in 575 s, alone a pile takes ~93 s).
+# processes' contexts; 2026-12-02: each reached t = 0.95 s in 575 s, alone a pile takes ~93 s;
+# 2026-12-08 on an H100: 45-61 s a full-size pile, the nine in 8 minutes: tools/repose_device.sh).
 REPOSE_JOBS ?= 1
 REPOSE_LIGGGHTS_CASES ?= 0.2:0.05 0.4:0.05 0.6:0.05
-# LIGGGHTS's MPI ranks (the full size: ~18 000 beads for ~4 s of settling, one case per core's hour or so)
+# LIGGGHTS's MPI ranks per case (2026-12-08, full size on one core of an AMD EPYC: ~180 steps/s, ~40 min a pile)
 REPOSE_LIGGGHTS_CORES ?= 1
 .PHONY: fig-repose fig-repose-liggghts
 fig-repose: deps
