@@ -37,10 +37,11 @@
 //   Ai, Chen, Rotter & Ooi, Powder Technol. 206 (2011) 269: rolling models A-D, model C for piles.
 //   Train (1958), glass spheres by four methods incl. the fixed-base cone (method as cited by the
 //     powder-metallurgy handbook; its numbers not retrieved here).
-//   Measured heaps of dry glass beads: 22-26 deg (the range the acceptance item gives; the figure
-//     shows it as a band). Which (mu_s, mu_r) stands for glass beads is itself a calibration:
-//     mu_s ~ 0.3-0.4 glass on glass, mu_r ~ 0.01-0.1 for near-spheres (Wensrich & Katterfeld,
-//     Powder Technol. 217 (2012) 409, read mu_r as a shape parameter).
+//   Measured heaps of dry glass beads: 22-26 deg, the range commonly quoted (no one measurement
+//     of 3 mm beads was retrieved here; the figure shows it as a band, and the 2-degree check is
+//     made against LIGGGHTS's pile of the same beads). Which (mu_s, mu_r) stands for glass beads
+//     is itself a calibration: mu_s ~ 0.3-0.4 glass on glass, mu_r ~ 0.01-0.1 for near-spheres
+//     (Wensrich & Katterfeld, Powder Technol. 217 (2012) 409, read mu_r as a shape parameter).
 // Writes <output directory>/{profile.csv, manifest.txt, pile.vtu, walls.vtu} and a row of
 // angles.csv beside it (data/repose/angles.csv for the sweep's directories; both codes' angles side
 // by side, --measure fills the LIGGGHTS columns).
