@@ -882,6 +882,9 @@ void read_feeds(const toml::table& root, const std::string& file, Scene& s) {
 Motion read_motion(Fields& object, const std::string& file, const std::string& label, const std::string& prefix, Scene& s) {
   Motion m;
   m.remove = object.number_or("remove_time", kInf, non_negative("s"));
+  if (m.remove < kInf && m.remove >= s.end_time)  // kept for a restart that runs longer, but said
+    s.notes.push_back("note: " + object.where_of("remove_time") + ": " + label + " is removed at t = " + Scene::shortest(m.remove) +
+                      " s, not before [simulation] end_time = " + Scene::shortest(s.end_time) + " s: it stays for the whole run");
   const toml::node* n = object.get("motion");
   if (!n) return m;
   if (!n->is_table()) object.fail(*n, "motion", "a table: motion = { kind = \"rotation\", ... }");
@@ -936,6 +939,11 @@ Motion read_motion(Fields& object, const std::string& file, const std::string& l
       break;
   }
   f.note(s, prefix + ".motion.", {"kind", "start_time", "ramp_time"});
+  // A motion that begins at or after the run's end is kept (a restart with a later end_time moves
+  // the object then), but said: in this run the object stands still.
+  if (m.kind != MotionKind::none && m.start >= s.end_time)
+    s.notes.push_back("note: " + f.where_of("start_time") + ": " + label + " starts moving at t = " + Scene::shortest(m.start) +
+                      " s, not before [simulation] end_time = " + Scene::shortest(s.end_time) + " s: it stands still in this run");
   return m;
 }
 
@@ -1168,6 +1176,9 @@ void read_mill(const toml::table& root, const std::string& file, Scene& s) {
   m.omega = f.has("rpm") ? f.number("rpm", {-1e6, 1e6, false, false, "rpm"}) * 2 * 3.14159265358979323846 / 60
                          : f.number("omega", {-1e5, 1e5, false, false, "rad/s"});
   m.start = f.number_or("start_time", 0, non_negative("s"));
+  if (m.start >= s.end_time)  // kept for a restart that runs longer, but said (as a wall's motion)
+    s.notes.push_back("note: " + f.where_of("start_time") + ": [mill] starts turning at t = " + Scene::shortest(m.start) +
+                      " s, not before [simulation] end_time = " + Scene::shortest(s.end_time) + " s: it stands still in this run");
   m.ramp = f.number_or("ramp_time", 0, non_negative("s"));
   m.end_plates = f.boolean_or("end_plates", true);
   check_mill_period(f, s, m);

@@ -238,6 +238,23 @@ BOOST_AUTO_TEST_CASE(wall_motions_are_read_and_bad_ones_named) {
   bool noted = false;
   for (const auto& n : fast.notes) noted = noted || has(n, "moves at up to 3");
   BOOST_TEST(noted);
+  // a motion that starts, or a removal that comes, at or after the run's end is kept (a restart
+  // with a later end_time uses it) but noted at its line: in this run the wall stands still / stays
+  for (const double end : {0.01, 0.2, 3.0})
+    for (const double at : {0.5 * end, end, 2 * end}) {
+      const std::string t = std::to_string(at), e = std::to_string(end);
+      const std::string text = edit("end_time = 0.01", "end_time = " + e,
+                                    with_motion("motion = { kind = \"translation\", velocity = [0, 0.1, 0], start_time = " + t +
+                                                " }\nremove_time = " + t));
+      const Scene late = parse_scene(text, "scene.toml");
+      bool starts = false, removed = false;
+      for (const auto& n : late.notes) {
+        starts = starts || (has(n, "scene.toml:" + std::to_string(line_of(text, "motion = "))) && has(n, "stands still in this run"));
+        removed = removed || (has(n, "scene.toml:" + std::to_string(line_of(text, "remove_time = " + t))) && has(n, "stays for the whole run"));
+      }
+      BOOST_TEST(starts == (at >= end), "end " << end << ", start " << at);
+      BOOST_TEST(removed == (at >= end), "end " << end << ", removal " << at);
+    }
   // without max_impact_speed, the default impact speed takes the wall's speed on top
   const Scene moving = parse_scene(with_motion("motion = { kind = \"translation\", velocity = [0, 3, 0] }"), "scene.toml");
   BOOST_TEST(std::fabs(moving.impact_speed - parse_scene(kBase, "scene.toml").impact_speed - 3) < 1e-12);
@@ -294,6 +311,14 @@ BOOST_AUTO_TEST_CASE(a_mill_is_built_and_bad_mills_are_named) {
     BOOST_TEST(s.walls[k].name.rfind("mill ", 0) == 0u);
   }
   BOOST_TEST(s.walls[0].motion.is_static());  // the scene's own wall does not turn
+  // a drum that starts turning at or after the run's end (end_time = 0.01) is noted at its line
+  for (const double start : {0.005, 0.01, 0.02}) {
+    const std::string text = base + mill + "start_time = " + std::to_string(start) + "\n";
+    bool noted = false;
+    for (const auto& n : parse_scene(text, "scene.toml").notes)
+      noted = noted || (has(n, "scene.toml:" + std::to_string(line_of(text, "start_time = "))) && has(n, "[mill] starts turning"));
+    BOOST_TEST(noted == (start >= 0.01), "start " << start);
+  }
   struct Bad {
     const char* from;
     const char* to;
